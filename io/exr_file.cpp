@@ -1,0 +1,119 @@
+#include "io/exr_file.hpp"
+
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStandardAttributes.h>
+
+#include <exception>
+#include <vector>
+
+#include <Imath/half.h>
+
+#include "io/error.hpp"
+
+namespace eyestream::io {
+
+namespace {
+
+Chromaticities from_imf(const Imf::Chromaticities& c) {
+  return {c.red.x, c.red.y, c.green.x, c.green.y, c.blue.x, c.blue.y, c.white.x, c.white.y};
+}
+
+Imf::Chromaticities to_imf(const Chromaticities& c) {
+  return Imf::Chromaticities(Imath::V2f(float(c.rx), float(c.ry)), Imath::V2f(float(c.gx), float(c.gy)),
+                             Imath::V2f(float(c.bx), float(c.by)), Imath::V2f(float(c.wx), float(c.wy)));
+}
+
+std::string channel_layout(const Imf::ChannelList& ch) {
+  bool rgb = ch.findChannel("R") && ch.findChannel("G") && ch.findChannel("B");
+  if (rgb) return ch.findChannel("A") ? "RGBA" : "RGB";
+  if (ch.findChannel("Y")) return "Y";
+  return "";
+}
+
+}  // namespace
+
+ExrImage read_exr(const std::string& path, std::int64_t max_pixels) {
+  try {
+    Imf::InputFile file(path.c_str());
+    const Imf::Header& header = file.header();
+    const Imath::Box2i dw = header.dataWindow();
+    const std::int64_t width = std::int64_t(dw.max.x) - dw.min.x + 1;
+    const std::int64_t height = std::int64_t(dw.max.y) - dw.min.y + 1;
+    if (width <= 0 || height <= 0 || width * height > max_pixels)
+      throw InputError(path + ": data window " + std::to_string(width) + "x" + std::to_string(height) +
+                       " exceeds the limit of " + std::to_string(max_pixels) + " pixels (--max-pixels)");
+
+    ExrImage image;
+    image.channels = channel_layout(header.channels());
+    if (image.channels.empty()) throw InputError(path + ": no R,G,B or Y channels");
+    if (Imf::hasWhiteLuminance(header)) image.white_luminance = Imf::whiteLuminance(header);
+    if (Imf::hasChromaticities(header)) image.chromaticities = from_imf(Imf::chromaticities(header));
+    if (Imf::hasFramesPerSecond(header)) {
+      const Imf::Rational& r = Imf::framesPerSecond(header);
+      if (r.d != 0 && r.n > 0) image.frames_per_second = double(r.n) / double(r.d);
+    }
+
+    image.rgb.create(int(height), int(width), CV_32FC3);
+    const size_t xs = 3 * sizeof(float), ys = xs * size_t(width);
+    char* base = reinterpret_cast<char*>(image.rgb.ptr<float>());
+    Imf::FrameBuffer fb;
+    if (image.channels == "Y") {
+      fb.insert("Y", Imf::Slice::Make(Imf::FLOAT, base, dw, xs, ys));
+    } else {
+      fb.insert("R", Imf::Slice::Make(Imf::FLOAT, base, dw, xs, ys));
+      fb.insert("G", Imf::Slice::Make(Imf::FLOAT, base + sizeof(float), dw, xs, ys));
+      fb.insert("B", Imf::Slice::Make(Imf::FLOAT, base + 2 * sizeof(float), dw, xs, ys));
+    }
+    file.setFrameBuffer(fb);
+    file.readPixels(dw.min.y, dw.max.y);
+    if (image.channels == "Y") {
+      image.rgb.forEach<cv::Vec3f>([](cv::Vec3f& p, const int*) { p[1] = p[2] = p[0]; });
+    }
+    return image;
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw InputError(path + ": cannot read EXR: " + e.what());
+  }
+}
+
+void write_exr(const std::string& path, const cv::Mat& rgb, const ExrWriteOptions& options) {
+  CV_Assert(rgb.type() == CV_32FC3 && rgb.isContinuous());
+  try {
+    Imf::Header header(rgb.cols, rgb.rows);
+    header.compression() = Imf::ZIP_COMPRESSION;
+    const Imf::PixelType type = options.half ? Imf::HALF : Imf::FLOAT;
+    for (const char* name : {"R", "G", "B"}) header.channels().insert(name, Imf::Channel(type));
+    Imf::addChromaticities(header, to_imf(rec709_chromaticities()));
+    if (options.white_luminance) Imf::addWhiteLuminance(header, float(*options.white_luminance));
+    if (options.frames_per_second) Imf::addFramesPerSecond(header, Imf::Rational(*options.frames_per_second));
+
+    Imf::OutputFile file(path.c_str(), header);
+    // Slices must match the channel type: convert to half here when asked.
+    std::vector<Imath::half> halves;
+    const char* base = reinterpret_cast<const char*>(rgb.ptr<float>());
+    size_t xs = 3 * sizeof(float);
+    if (options.half) {
+      const float* src = rgb.ptr<float>();
+      halves.assign(src, src + rgb.total() * 3);
+      base = reinterpret_cast<const char*>(halves.data());
+      xs = 3 * sizeof(Imath::half);
+    }
+    const size_t ys = xs * size_t(rgb.cols), cs = xs / 3;
+    char* b = const_cast<char*>(base);
+    Imf::FrameBuffer fb;
+    fb.insert("R", Imf::Slice(type, b, xs, ys));
+    fb.insert("G", Imf::Slice(type, b + cs, xs, ys));
+    fb.insert("B", Imf::Slice(type, b + 2 * cs, xs, ys));
+    file.setFrameBuffer(fb);
+    file.writePixels(rgb.rows);
+  } catch (const std::exception& e) {
+    throw OutputError(path + ": cannot write EXR: " + e.what());
+  }
+}
+
+}  // namespace eyestream::io

@@ -1,0 +1,39 @@
+// Reading and writing single OpenEXR images with the standard attributes
+// eyestream uses (whiteLuminance, chromaticities, framesPerSecond).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include <opencv2/core.hpp>
+
+#include "io/primaries.hpp"
+
+namespace eyestream::io {
+
+struct ExrImage {
+  cv::Mat rgb;                                // CV_32FC3, file's own primaries
+  std::optional<double> white_luminance;      // cd/m^2 of RGB = (1,1,1)
+  std::optional<Chromaticities> chromaticities;
+  std::optional<double> frames_per_second;
+  std::string channels;                       // "RGB", "RGBA" or "Y"
+};
+
+// Reads RGB, RGBA (alpha ignored) or luminance-only (Y) EXR files, half or
+// float. Refuses (InputError, naming the file) a file that is unreadable,
+// truncated, lacks those channels, or whose data window exceeds max_pixels
+// (checked from the header before any pixel memory is allocated).
+ExrImage read_exr(const std::string& path, std::int64_t max_pixels);
+
+struct ExrWriteOptions {
+  bool half = true;
+  std::optional<double> white_luminance;
+  std::optional<double> frames_per_second;
+};
+
+// Writes a CV_32FC3 RGB image to `path` (ZIP compression). The caller makes
+// the file atomic (see StagedFile) when it matters.
+void write_exr(const std::string& path, const cv::Mat& rgb, const ExrWriteOptions& options);
+
+}  // namespace eyestream::io

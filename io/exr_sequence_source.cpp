@@ -1,0 +1,57 @@
+#include "io/exr_sequence_source.hpp"
+
+#include "io/error.hpp"
+#include "io/exr_file.hpp"
+#include "io/primaries.hpp"
+#include "io/staged_file.hpp"
+
+namespace eyestream::io {
+
+ExrSequenceSource::ExrSequenceSource(const std::string& input, const ExrSequenceOptions& options)
+    : options_(options), entries_(list_sequence(input, {".exr"}, options.skip_missing)) {
+  for (const SequenceEntry& e : entries_) protect_input(e.path);
+  ExrImage probe = read_exr(entries_.front().path, options_.max_pixels);
+  double fps = options_.frames_per_second.value_or(
+      probe.frames_per_second.value_or(options_.default_frames_per_second));
+  if (!(fps > 0)) throw UsageError("--fps: frame rate must be positive");
+  info_.width = probe.rgb.cols;
+  info_.height = probe.rgb.rows;
+  info_.frames_per_second = fps;
+  info_.frame_count = std::int64_t(entries_.size());
+  info_.description = "EXR sequence, " + std::to_string(entries_.size()) + " frames, " + probe.channels;
+  first_ = decode(entries_.front(), 0);
+}
+
+SceneFrame ExrSequenceSource::decode(const SequenceEntry& entry, std::int64_t index) const {
+  ExrImage image = read_exr(entry.path, options_.max_pixels);
+  if (index > 0 && (image.rgb.cols != info_.width || image.rgb.rows != info_.height))
+    throw InputError(entry.path + ": frame " + std::to_string(index) + " is " + std::to_string(image.rgb.cols) +
+                     "x" + std::to_string(image.rgb.rows) + ", the sequence began at " +
+                     std::to_string(info_.width) + "x" + std::to_string(info_.height));
+  if (image.chromaticities) {
+    cv::Matx33d m = to_rec709_matrix(*image.chromaticities);
+    if (!is_identity(m)) apply_matrix(image.rgb, m);
+  }
+  double scale = options_.scale.value_or(image.white_luminance.value_or(1.0));
+  if (scale != 1.0) image.rgb *= scale;
+  SceneFrame frame;
+  frame.rgb = std::move(image.rgb);
+  frame.index = index;
+  frame.time_s = double(entry.number - entries_.front().number) / info_.frames_per_second;
+  frame.source = entry.path;
+  return frame;
+}
+
+std::optional<SceneFrame> ExrSequenceSource::next() {
+  if (position_ >= entries_.size()) return std::nullopt;
+  std::int64_t index = std::int64_t(position_);
+  const SequenceEntry& entry = entries_[position_++];
+  if (first_) {
+    SceneFrame f = std::move(*first_);
+    first_.reset();
+    return f;
+  }
+  return decode(entry, index);
+}
+
+}  // namespace eyestream::io

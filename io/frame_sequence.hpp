@@ -1,0 +1,29 @@
+// Finding the files of a numbered frame sequence.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace eyestream::io {
+
+struct SequenceEntry {
+  std::string path;
+  std::int64_t number;  // frame number in the pattern; position for folders
+};
+
+// True when `pattern` holds one printf integer conversion (%d, %05d, %5d).
+bool is_printf_pattern(const std::string& pattern);
+
+// Expands a printf pattern to a file name for `number`.
+std::string format_pattern(const std::string& pattern, std::int64_t number);
+
+// Lists the frames of `input`: a printf pattern (the numbers found on disk,
+// from the smallest to the largest), a folder (its files ending in one of
+// `extensions`, by name), or a single file. A gap in a numbered sequence is
+// an InputError naming the first missing file, unless skip_missing.
+// No frame at all is an InputError naming `input`.
+std::vector<SequenceEntry> list_sequence(const std::string& input, const std::vector<std::string>& extensions,
+                                         bool skip_missing);
+
+}  // namespace eyestream::io

@@ -1,0 +1,19 @@
+// The native gaze model every gaze format maps to.
+#pragma once
+
+namespace eyestream::io {
+
+enum class EyeState {
+  kOpen,    // fixation or saccade: the eye sees the frame at (x, y)
+  kClosed,  // blink: the eye sees darkness
+  kLost,    // tracker lost: hold the last known gaze
+};
+
+// One sample; it holds from `t_s` until the next sample (zero-order hold).
+struct GazeSample {
+  double t_s = 0.0;         // seconds from the first frame
+  double x = 0.0, y = 0.0;  // input-frame pixels, origin top-left, pixel centres at +0.5
+  EyeState state = EyeState::kOpen;
+};
+
+}  // namespace eyestream::io

@@ -1,0 +1,33 @@
+// PNG (8 or 16 bit, display-encoded) and EXR (float, display-linear)
+// sequences, one file per frame, named by a printf pattern.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "io/frame_sink.hpp"
+#include "io/staged_file.hpp"
+
+namespace eyestream::io {
+
+enum class ImageFormat { kPng8, kPng16, kExr };
+
+// Frame k is written to format_pattern(pattern, k + first_number). All files
+// are staged and appear together at finish(); a sink destroyed before
+// finish() removes them. A pattern with no %d is accepted for a one-frame
+// run; a second frame then is an OutputError.
+class ImageSequenceSink : public FrameSink {
+ public:
+  ImageSequenceSink(std::string pattern, ImageFormat format, std::int64_t first_number = 0);
+  SinkNeeds needs() const override;
+  void write(const DisplayFrame& frame) override;
+  void finish() override;
+
+ private:
+  std::string pattern_;
+  ImageFormat format_;
+  std::int64_t first_number_;
+  std::vector<StagedFile> files_;
+};
+
+}  // namespace eyestream::io

@@ -1,0 +1,21 @@
+// Chooses the output kind from the output path's extension.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "io/frame_sink.hpp"
+#include "io/video_writer.hpp"
+
+namespace eyestream::io {
+
+struct SinkOptions {
+  VideoOptions video;
+  int png_bits = 8;  // 8 or 16
+};
+
+// .mp4 -> H.264 video; .png -> PNG sequence; .exr -> EXR sequence. Any other
+// extension is a UsageError naming the path.
+std::unique_ptr<FrameSink> make_sink(const std::string& path, const SinkOptions& options);
+
+}  // namespace eyestream::io

@@ -1,0 +1,41 @@
+// Output files that appear under their final name only when complete.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace eyestream::io {
+
+// One file written under a temporary name in the destination folder and
+// renamed to the final name by commit(). If the object is destroyed without
+// commit(), the temporary file is removed: no partial output is left.
+// Refuses (OutputError) a destination that is one of `protected_inputs`.
+class StagedFile {
+ public:
+  explicit StagedFile(std::filesystem::path final_path);
+  ~StagedFile();
+  StagedFile(const StagedFile&) = delete;
+  StagedFile& operator=(const StagedFile&) = delete;
+  StagedFile(StagedFile&& other) noexcept;
+  StagedFile& operator=(StagedFile&& other) = delete;
+
+  const std::filesystem::path& temp_path() const { return temp_; }
+  const std::filesystem::path& final_path() const { return final_; }
+  void commit();
+
+ private:
+  std::filesystem::path final_;
+  std::filesystem::path temp_;
+  bool done_ = false;
+};
+
+// Writes `bytes` to a staged file; the caller commits it.
+void write_all(const StagedFile& file, const std::vector<unsigned char>& bytes);
+
+// Registers paths that outputs must never replace (the inputs of a run).
+void protect_input(const std::filesystem::path& path);
+// Throws OutputError if `path` names a protected input.
+void check_not_input(const std::filesystem::path& path);
+
+}  // namespace eyestream::io

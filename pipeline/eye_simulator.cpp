@@ -1,0 +1,46 @@
+#include "pipeline/eye_simulator.hpp"
+
+#include "pipeline/pixel_checks.hpp"
+#include "retina/adaptation.hpp"
+#include "retina/display_encoding.hpp"
+#include "retina/log_luminance_field.hpp"
+#include "retina/tone_curve.hpp"
+#include "retina/tone_map.hpp"
+
+namespace eyestream::pipeline {
+
+EyeSimulator::EyeSimulator(Plan plan) : plan_(std::move(plan)) {}
+
+io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::vector<GazeSegment>& segments,
+                                       FrameReport* report) {
+  const retina::LogLuminanceField field(frame.rgb, plan_.dark_cd_m2);
+  double target = plan_.dark_log;
+  for (const GazeSegment& seg : segments) {
+    target = seg.eye_closed ? plan_.dark_log
+                            : field.patch_mean(seg.x, seg.y, plan_.patch_half_px, plan_.surround_log);
+    if (!adaptation_) adaptation_ = target;
+    adaptation_ = retina::adaptation_step(*adaptation_, target, seg.duration(), plan_.adaptation);
+  }
+  const GazeSegment& last = segments.back();
+
+  io::DisplayFrame out;
+  out.index = frame.index;
+  out.time_s = frame.time_s;
+  const retina::ToneCurve curve(*adaptation_, plan_.tone);
+  if (last.eye_closed) out.linear = cv::Mat::zeros(frame.rgb.size(), CV_32FC3);
+  else retina::tone_map(frame.rgb, curve, out.linear);
+  if (plan_.needs != io::SinkNeeds::kLinear)
+    retina::encode_display(out.linear, plan_.needs == io::SinkNeeds::kCode16 ? 16 : 8, frame.index, plan_.encoding,
+                           out.code);
+  if (report) {
+    report->adaptation_log = *adaptation_;
+    report->target_log = target;
+    report->gaze_x = last.x;
+    report->gaze_y = last.y;
+    report->eye_closed = last.eye_closed;
+    report->nonfinite_pixels = count_nonfinite(frame.rgb);
+  }
+  return out;
+}
+
+}  // namespace eyestream::pipeline

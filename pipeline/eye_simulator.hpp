@@ -1,0 +1,42 @@
+// The viewer's eye over time: owns every piece of temporal state and turns
+// each scene frame (with the gaze during its interval) into a display frame.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "io/frame.hpp"
+#include "pipeline/gaze_timeline.hpp"
+#include "pipeline/plan.hpp"
+
+namespace eyestream::pipeline {
+
+// What happened to one frame, for logs and reports.
+struct FrameReport {
+  double adaptation_log = 0.0;  // at the end of the interval, log10 cd/m^2
+  double target_log = 0.0;      // the last adaptation target
+  double gaze_x = 0.0, gaze_y = 0.0;
+  bool eye_closed = false;
+  std::int64_t nonfinite_pixels = 0;
+};
+
+class EyeSimulator {
+ public:
+  explicit EyeSimulator(Plan plan);
+
+  // Steps the state through the frame's interval, one exact step per gaze
+  // segment, and renders what the eye sees at the end of the interval
+  // (darkness while the eye is closed). On the first frame the viewer starts
+  // adapted to the first segment's target. Non-finite pixels are counted and
+  // seen as black; they never enter the state.
+  io::DisplayFrame process(const io::SceneFrame& frame, const std::vector<GazeSegment>& segments,
+                           FrameReport* report = nullptr);
+
+  double adaptation_log() const { return adaptation_.value_or(plan_.dark_log); }
+
+ private:
+  Plan plan_;
+  std::optional<double> adaptation_;
+};
+
+}  // namespace eyestream::pipeline

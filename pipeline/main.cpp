@@ -1,0 +1,89 @@
+// The eyestream command-line program.
+#include <cstdio>
+#include <exception>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "io/error.hpp"
+#include "pipeline/exit_codes.hpp"
+#include "pipeline/parameter.hpp"
+#include "pipeline/run.hpp"
+#include "pipeline/settings.hpp"
+#include "samples/scene.hpp"
+
+namespace {
+
+using namespace eyestream;
+using namespace eyestream::pipeline;
+
+std::string scene_list() {
+  std::string text = "Scenes:\n";
+  for (const samples::Scene& s : samples::scenes()) text += "  " + s.name + ": " + s.summary + "\n";
+  return text;
+}
+
+int fail(ExitCode code, const std::string& message) {
+  std::fprintf(stderr, "eyestream: error: %s\n", message.c_str());
+  return code;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"eyestream: filters HDR video through a model of one viewer's eye and writes what that viewer "
+               "would see on an ordinary display."};
+  app.require_subcommand(1);
+  app.set_help_all_flag("--help-all", "every option of every command");
+
+  Settings settings;
+  ParamSet params = run_parameters(settings);
+  CLI::App* run_cmd = app.add_subcommand("run", "filter an HDR frame sequence with a gaze log");
+  run_cmd->add_option("-i,--input", settings.input, "EXR sequence: printf pattern (frames/%05d.exr), folder or file")
+      ->required();
+  run_cmd->add_option("-g,--gaze", settings.gaze, "gaze log CSV (t,x,y[,event]); none: fixed gaze at the centre");
+  run_cmd->add_option("-o,--output", settings.output, "output: video.mp4, frames/%05d.png or frames/%05d.exr")
+      ->required();
+  run_cmd->add_option("--config", settings.config, "JSON file of parameter values (command line wins)");
+  params.bind(*run_cmd);
+
+  samples::SceneOptions scene;
+  std::string scene_name;
+  CLI::App* sample_cmd = app.add_subcommand("sample", "generate a built-in scene: DIR/frames/%05d.exr and DIR/gaze.csv");
+  sample_cmd->footer(scene_list());
+  sample_cmd->add_option("scene", scene_name, "scene name")->required();
+  sample_cmd->add_option("-o,--output", scene.out_dir, "output folder")->required();
+  sample_cmd->add_option("--width", scene.width, "frame width [px]")->check(CLI::Range(16, 8192));
+  sample_cmd->add_option("--height", scene.height, "frame height [px]")->check(CLI::Range(16, 8192));
+  sample_cmd->add_option("--fps", scene.fps, "frame rate [1/s]")->check(CLI::Range(1.0, 1000.0));
+  sample_cmd->add_option("--duration", scene.duration_s, "length [s]; 0: the scene's own")->check(CLI::Range(0.0, 3600.0));
+  sample_cmd->add_option("--seed", scene.seed, "seed of the scene's random choices");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kExitOk : kExitUsage;
+  }
+
+  try {
+    if (*run_cmd) {
+      params.apply(settings.config);
+      const RunSummary summary = run(settings);
+      std::fprintf(stderr, "%s\n", summary.one_line().c_str());
+    } else if (*sample_cmd) {
+      const samples::Scene& s = samples::find_scene(scene_name);
+      s.generate(scene);
+      std::fprintf(stderr, "eyestream: wrote scene %s to %s\n", s.name.c_str(), scene.out_dir.c_str());
+    }
+    return kExitOk;
+  } catch (const UsageError& e) {
+    return fail(kExitUsage, e.what());
+  } catch (const InputError& e) {
+    return fail(kExitInput, e.what());
+  } catch (const OutputError& e) {
+    return fail(kExitOutput, e.what());
+  } catch (const std::exception& e) {
+    return fail(kExitInternal, std::string("internal error: ") + e.what());
+  }
+}

@@ -1,0 +1,42 @@
+#include "pipeline/plan.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "io/error.hpp"
+
+namespace eyestream::pipeline {
+
+Plan compile_plan(const Settings& s, const io::SourceInfo& source, io::SinkNeeds needs) {
+  if (!(s.tone.plateau_low < s.tone.plateau_high))
+    throw UsageError("--plateau-low must be below --plateau-high");
+  Plan p;
+  p.width = source.width;
+  p.height = source.height;
+  p.frames_per_second = source.frames_per_second;
+  p.fov_deg = field_of_view_deg(s.geometry, source.width, source.height);
+  p.pixels_per_degree = pixels_per_degree(s.geometry, source.width, source.height);
+  p.patch_half_px = 0.5 * s.adaptation_patch_deg * p.pixels_per_degree;
+  p.dark_cd_m2 = s.dark_cd_m2;
+  p.dark_log = std::log10(s.dark_cd_m2);
+  p.surround_log = std::log10(std::max(s.surround_cd_m2, s.dark_cd_m2));
+  p.adaptation = s.adaptation;
+  p.tone = s.tone;
+  p.encoding = s.encoding;
+  p.encoding.seed = std::uint64_t(s.seed);
+  p.needs = needs;
+  return p;
+}
+
+std::string Plan::describe() const {
+  std::ostringstream o;
+  o << "frame = " << width << "x" << height << " at " << frames_per_second << " fps\n"
+    << "field of view = " << fov_deg << " deg (" << pixels_per_degree << " px/deg)\n"
+    << "adaptation patch = " << 2 * patch_half_px << " px\n"
+    << "adaptation rates = +" << adaptation.rate_up_log_per_s << " / -" << adaptation.rate_down_log_per_s
+    << " log10/s\n"
+    << "stages = adaptation, tone curve, display encoding" << (encoding.dither ? " (dithered)" : "") << "\n";
+  return o.str();
+}
+
+}  // namespace eyestream::pipeline

@@ -1,0 +1,33 @@
+// Settings compiled once per sequence into what every frame runs with
+// (the OpenColorIO Config -> Processor idea, DESIGN.md).
+#pragma once
+
+#include <string>
+
+#include "io/frame_sink.hpp"
+#include "io/frame_source.hpp"
+#include "pipeline/settings.hpp"
+
+namespace eyestream::pipeline {
+
+struct Plan {
+  int width = 0, height = 0;
+  double frames_per_second = 30.0;
+  double fov_deg = 0.0, pixels_per_degree = 0.0;
+  double patch_half_px = 0.0;  // half side of the adaptation patch
+  double surround_log = 0.0;   // log10 cd/m^2
+  double dark_cd_m2 = 1e-6, dark_log = -6.0;
+  retina::AdaptationParams adaptation;
+  retina::ToneCurveParams tone;
+  retina::EncodingParams encoding;
+  io::SinkNeeds needs = io::SinkNeeds::kCode8;
+
+  // One "name = value" line per resolved setting.
+  std::string describe() const;
+};
+
+// UsageError when the settings contradict each other (plateau-low must be
+// below plateau-high).
+Plan compile_plan(const Settings& s, const io::SourceInfo& source, io::SinkNeeds needs);
+
+}  // namespace eyestream::pipeline

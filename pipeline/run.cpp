@@ -1,0 +1,72 @@
+#include "pipeline/run.hpp"
+
+#include <cstdio>
+#include <memory>
+#include <sstream>
+
+#include <opencv2/core.hpp>
+
+#include "io/error.hpp"
+#include "io/exr_sequence_source.hpp"
+#include "io/gaze_csv.hpp"
+#include "io/library_logging.hpp"
+#include "io/sink_factory.hpp"
+#include "pipeline/eye_simulator.hpp"
+#include "pipeline/gaze_timeline.hpp"
+#include "pipeline/plan.hpp"
+#include "pipeline/progress.hpp"
+
+namespace eyestream::pipeline {
+
+std::string RunSummary::one_line() const {
+  std::ostringstream o;
+  o.precision(3);
+  o << "eyestream: " << frames << " frames in " << wall_s << " s (" << (wall_s > 0 ? frames / wall_s : 0.0)
+    << " fps) -> " << output << "; final adaptation " << final_adaptation_log << " log10 cd/m^2";
+  if (nonfinite_pixels) o << "; " << nonfinite_pixels << " non-finite pixels shown black";
+  return o.str();
+}
+
+RunSummary run(const Settings& s) {
+  cv::setNumThreads(s.threads > 0 ? s.threads : -1);
+  io::set_library_verbosity(s.verbose);
+  io::ExrSequenceSource source(s.input, s.exr);
+  const io::SourceInfo& info = source.info();
+  std::vector<io::GazeSample> samples;
+  if (!s.gaze.empty())
+    samples = io::read_gaze_csv(s.gaze, s.gaze_units == "norm" ? io::GazeUnits::kNormalised : io::GazeUnits::kPixels,
+                                info.width, info.height);
+  io::SinkOptions sink_options = s.sink;
+  sink_options.video.frames_per_second = info.frames_per_second;
+  std::unique_ptr<io::FrameSink> sink = io::make_sink(s.output, sink_options);
+  const Plan plan = compile_plan(s, info, sink->needs());
+  if (s.verbose) std::fprintf(stderr, "%s: %s\n%s", s.input.c_str(), info.description.c_str(), plan.describe().c_str());
+  EyeSimulator eye(plan);
+  const GazeTimeline timeline(samples, info.width / 2.0, info.height / 2.0);
+
+  RunSummary summary;
+  summary.output = s.output;
+  Progress progress(info.frame_count, s.progress);
+  std::optional<io::SceneFrame> current = source.next();
+  while (current) {
+    std::optional<io::SceneFrame> next = source.next();
+    const double t1 = next ? next->time_s : current->time_s + 1.0 / info.frames_per_second;
+    FrameReport report;
+    sink->write(eye.process(*current, timeline.segments(current->time_s, t1), &report));
+    summary.nonfinite_pixels += report.nonfinite_pixels;
+    if (s.verbose)
+      std::fprintf(stderr, "frame %lld t=%.3f s gaze=(%.1f,%.1f)%s adaptation=%.3f target=%.3f\n",
+                   (long long)current->index, current->time_s, report.gaze_x, report.gaze_y,
+                   report.eye_closed ? " closed" : "", report.adaptation_log, report.target_log);
+    ++summary.frames;
+    progress.frame_done();
+    current = std::move(next);
+  }
+  sink->finish();
+  progress.finish();
+  summary.wall_s = progress.elapsed_s();
+  summary.final_adaptation_log = eye.adaptation_log();
+  return summary;
+}
+
+}  // namespace eyestream::pipeline

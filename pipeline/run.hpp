@@ -1,0 +1,27 @@
+// The streaming frame loop behind `eyestream run`.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "pipeline/settings.hpp"
+
+namespace eyestream::pipeline {
+
+struct RunSummary {
+  std::int64_t frames = 0;
+  double wall_s = 0.0;
+  std::int64_t nonfinite_pixels = 0;
+  double final_adaptation_log = 0.0;
+  std::string output;
+  std::string one_line() const;
+};
+
+// Reads the input frame by frame (memory does not grow with length), steps
+// the eye through each frame's interval with the gaze samples inside it,
+// and writes the output; the output appears only when complete. Frame k's
+// interval ends at frame k+1's time (one frame of look-ahead); the last
+// frame's lasts 1/fps. Errors are UsageError, InputError or OutputError.
+RunSummary run(const Settings& settings);
+
+}  // namespace eyestream::pipeline

@@ -1,0 +1,50 @@
+// Everything a run is configured with: module parameter structs (each with
+// its defaults next to its model) plus the run's own options. Declared for
+// the command line and config file in run_parameters.cpp.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "io/exr_sequence_source.hpp"
+#include "io/sink_factory.hpp"
+#include "pipeline/viewing_geometry.hpp"
+#include "retina/adaptation.hpp"
+#include "retina/display_encoding.hpp"
+#include "retina/tone_curve.hpp"
+
+namespace eyestream::pipeline {
+
+struct Settings {
+  // Files.
+  std::string input, gaze, output, config;
+  std::string gaze_units = "px";
+
+  io::ExrSequenceOptions exr;
+  io::SinkOptions sink;
+  ViewingGeometry geometry;
+
+  // Retina.
+  retina::AdaptationParams adaptation;
+  retina::ToneCurveParams tone;
+  double adaptation_patch_deg = 1.5;  // side of the square patch around the gaze (MODEL.md 2.1: 1-2 deg)
+  double surround_cd_m2 = 1.0;        // luminance seen by retina sites looking outside the frame
+  double dark_cd_m2 = 1e-6;           // what closed eyes see; floor of all log luminances
+
+  // Display.
+  retina::EncodingParams encoding;
+
+  // Program.
+  int threads = 0;  // 0: all cores
+  std::int64_t seed = 0;
+  bool progress = true;
+  bool verbose = false;
+};
+
+class ParamSet;
+
+// Declares every tunable field of `s` (name, unit, range, help; default =
+// the field's current value).
+ParamSet run_parameters(Settings& s);
+
+}  // namespace eyestream::pipeline

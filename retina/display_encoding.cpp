@@ -1,0 +1,53 @@
+#include "retina/display_encoding.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "retina/hash_random.hpp"
+
+namespace eyestream::retina {
+
+namespace {
+
+template <typename T>
+void encode_rows(const cv::Mat& linear, std::int64_t frame, const EncodingParams& p, float max_code, cv::Mat& code) {
+  const float gamma = float(p.gamma);
+  cv::parallel_for_(cv::Range(0, linear.rows), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      const float* in = linear.ptr<float>(y);
+      T* out = code.ptr<T>(y);
+      for (int i = 0; i < linear.cols * 3; ++i) {
+        float j = in[i];
+        j = std::isfinite(j) ? std::clamp(j, 0.0f, 1.0f) : 0.0f;
+        const float v = std::pow(j, gamma) * max_code;
+        float q;
+        if (p.dither) {
+          // MODEL.md 3: round up with probability equal to the fractional part.
+          const float u = hash_uniform(hash_key(p.seed, std::uint64_t(RandomStream::kDither), std::uint64_t(frame),
+                                                std::uint64_t(i / 3), std::uint64_t(y), std::uint64_t(i % 3)));
+          const float lo = std::floor(v);
+          q = lo + ((v - lo) > u ? 1.0f : 0.0f);
+        } else {
+          q = std::nearbyint(v);
+        }
+        out[i] = T(std::min(q, max_code));
+      }
+    }
+  });
+}
+
+}  // namespace
+
+void encode_display(const cv::Mat& linear, int bits, std::int64_t frame_index, const EncodingParams& p,
+                    cv::Mat& code) {
+  CV_Assert(linear.type() == CV_32FC3 && (bits == 8 || bits == 16));
+  if (bits == 8) {
+    code.create(linear.size(), CV_8UC3);
+    encode_rows<std::uint8_t>(linear, frame_index, p, 255.0f, code);
+  } else {
+    code.create(linear.size(), CV_16UC3);
+    encode_rows<std::uint16_t>(linear, frame_index, p, 65535.0f, code);
+  }
+}
+
+}  // namespace eyestream::retina

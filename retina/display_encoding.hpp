@@ -1,0 +1,25 @@
+// Display encoding: gamma, clipping and temporally dithered quantisation
+// (seed 001 sec. 2.4 and App. A; MODEL.md 2.1 and 3).
+#pragma once
+
+#include <cstdint>
+
+#include <opencv2/core.hpp>
+
+namespace eyestream::retina {
+
+struct EncodingParams {
+  double gamma = 0.455;  // display value J^gamma (seed 001 App. A)
+  bool dither = true;    // temporal dithering before quantisation
+  std::uint64_t seed = 0;
+};
+
+// Encodes display-linear J (CV_32FC3) to `code` with `bits` = 8 or 16:
+// v = clamp(J, 0, 1)^gamma * (2^bits - 1), rounded up with probability equal
+// to its fractional part (per channel, pixel and frame, from a hash of
+// (seed, frame_index, x, y, channel)), else rounded to nearest. Non-finite J
+// encodes as 0. Threads over rows; bytes do not depend on the thread count.
+void encode_display(const cv::Mat& linear, int bits, std::int64_t frame_index, const EncodingParams& p,
+                    cv::Mat& code);
+
+}  // namespace eyestream::retina

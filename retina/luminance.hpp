@@ -1,0 +1,15 @@
+// Luminance of linear Rec.709 RGB.
+#pragma once
+
+#include <opencv2/core.hpp>
+
+namespace eyestream::retina {
+
+// Photopic luminance weights of Rec.709 RGB (MODEL.md 0; seed 001 App. A wP).
+inline constexpr float kPhotopicR = 0.2126f, kPhotopicG = 0.7152f, kPhotopicB = 0.0722f;
+
+inline float photopic_luminance(const cv::Vec3f& rgb) {
+  return kPhotopicR * rgb[0] + kPhotopicG * rgb[1] + kPhotopicB * rgb[2];
+}
+
+}  // namespace eyestream::retina

@@ -1,0 +1,18 @@
+// Applies the tone curve to a frame, keeping colour ratios (seed 001 sec.
+// 2.1: "enforcing a consistent ratio between color channels").
+#pragma once
+
+#include <opencv2/core.hpp>
+
+#include "retina/tone_curve.hpp"
+
+namespace eyestream::retina {
+
+// display_linear = R(Y) * rgb / Y per pixel, Y the photopic luminance of
+// `rgb` (CV_32FC3, cd/m^2). Pixels with Y <= 0 or non-finite values map to
+// black. Channels may exceed 1 or be negative (saturated or out-of-gamut
+// colours); display encoding clips them. Threads over rows; the result does
+// not depend on the thread count.
+void tone_map(const cv::Mat& rgb, const ToneCurve& curve, cv::Mat& display_linear);
+
+}  // namespace eyestream::retina
