@@ -8,10 +8,10 @@
 
 namespace eyestream::glare {
 
-double vos_f0(double t_deg);                          // unscattered core
-double vos_f1(double t_deg);                          // dominant below 1-2 deg
-double vos_f2(double t_deg);                          // dominant beyond 1 deg
-double vos_f3(double t_deg, double wavelength_nm);    // lenticular halo ring
+double vos_f0(double t_deg);                        // unscattered core
+double vos_f1(double t_deg);                        // dominant below 1-2 deg
+double vos_f2(double t_deg);                        // dominant beyond 1 deg
+double vos_f3(double t_deg, double wavelength_nm);  // lenticular halo ring
 
 // 2 pi * integral over u in [0, pi/2] of f(t_deg(u)) sin(u) du, u in
 // radians: the volume of a radially symmetric density over the hemisphere

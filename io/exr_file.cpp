@@ -1,5 +1,6 @@
 #include "io/exr_file.hpp"
 
+#include <Imath/half.h>
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
@@ -9,8 +10,6 @@
 
 #include <exception>
 #include <vector>
-
-#include <Imath/half.h>
 
 #include "io/error.hpp"
 

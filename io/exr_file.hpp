@@ -3,21 +3,20 @@
 #pragma once
 
 #include <cstdint>
+#include <opencv2/core.hpp>
 #include <optional>
 #include <string>
-
-#include <opencv2/core.hpp>
 
 #include "io/primaries.hpp"
 
 namespace eyestream::io {
 
 struct ExrImage {
-  cv::Mat rgb;                                // CV_32FC3, file's own primaries
-  std::optional<double> white_luminance;      // cd/m^2 of RGB = (1,1,1)
+  cv::Mat rgb;                            // CV_32FC3, file's own primaries
+  std::optional<double> white_luminance;  // cd/m^2 of RGB = (1,1,1)
   std::optional<Chromaticities> chromaticities;
   std::optional<double> frames_per_second;
-  std::string channels;                       // "RGB", "RGBA" or "Y"
+  std::string channels;  // "RGB", "RGBA" or "Y"
 };
 
 // Reads RGB, RGBA (alpha ignored) or luminance-only (Y) EXR files, half or

@@ -11,8 +11,8 @@ ExrSequenceSource::ExrSequenceSource(const std::string& input, const ExrSequence
     : options_(options), entries_(list_sequence(input, {".exr"}, options.skip_missing)) {
   for (const SequenceEntry& e : entries_) protect_input(e.path);
   ExrImage probe = read_exr(entries_.front().path, options_.max_pixels);
-  double fps = options_.frames_per_second.value_or(
-      probe.frames_per_second.value_or(options_.default_frames_per_second));
+  double fps =
+      options_.frames_per_second.value_or(probe.frames_per_second.value_or(options_.default_frames_per_second));
   if (!(fps > 0)) throw UsageError("--fps: frame rate must be positive");
   info_.width = probe.rgb.cols;
   info_.height = probe.rgb.rows;
@@ -25,9 +25,9 @@ ExrSequenceSource::ExrSequenceSource(const std::string& input, const ExrSequence
 SceneFrame ExrSequenceSource::decode(const SequenceEntry& entry, std::int64_t index) const {
   ExrImage image = read_exr(entry.path, options_.max_pixels);
   if (index > 0 && (image.rgb.cols != info_.width || image.rgb.rows != info_.height))
-    throw InputError(entry.path + ": frame " + std::to_string(index) + " is " + std::to_string(image.rgb.cols) +
-                     "x" + std::to_string(image.rgb.rows) + ", the sequence began at " +
-                     std::to_string(info_.width) + "x" + std::to_string(info_.height));
+    throw InputError(entry.path + ": frame " + std::to_string(index) + " is " + std::to_string(image.rgb.cols) + "x" +
+                     std::to_string(image.rgb.rows) + ", the sequence began at " + std::to_string(info_.width) + "x" +
+                     std::to_string(info_.height));
   if (image.chromaticities) {
     cv::Matx33d m = to_rec709_matrix(*image.chromaticities);
     if (!is_identity(m)) apply_matrix(image.rgb, m);

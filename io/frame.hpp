@@ -2,9 +2,8 @@
 #pragma once
 
 #include <cstdint>
-#include <string>
-
 #include <opencv2/core.hpp>
+#include <string>
 
 namespace eyestream::io {
 
@@ -13,9 +12,9 @@ namespace eyestream::io {
 // non-finite if the file holds them; consumers decide the policy.
 struct SceneFrame {
   cv::Mat rgb;
-  double time_s = 0.0;      // presentation time from the first frame
-  std::int64_t index = 0;   // position in the stream, 0-based
-  std::string source;       // file name (or stream name) for messages
+  double time_s = 0.0;     // presentation time from the first frame
+  std::int64_t index = 0;  // position in the stream, 0-based
+  std::string source;      // file name (or stream name) for messages
 };
 
 // A display-referred frame ready for writing. `linear` is display-linear

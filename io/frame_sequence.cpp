@@ -4,7 +4,6 @@
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
-#include <regex>
 
 #include "io/error.hpp"
 
@@ -20,15 +19,22 @@ struct PatternParts {
   bool zero_pad = false;
 };
 
+// Finds one printf integer conversion "%d", "%Nd" or "%0Nd" in `name`.
 bool split_pattern(const std::string& name, PatternParts& out) {
-  static const std::regex conv("%(0?)([0-9]*)d");
-  std::smatch m;
-  if (!std::regex_search(name, m, conv)) return false;
-  out.prefix = m.prefix();
-  out.suffix = m.suffix();
-  out.zero_pad = m[1].length() > 0;
-  out.width = m[2].length() ? std::stoi(m[2]) : 0;
-  return out.suffix.find('%') == std::string::npos && out.prefix.find('%') == std::string::npos;
+  for (size_t i = name.find('%'); i != std::string::npos; i = name.find('%', i + 1)) {
+    size_t j = i + 1;
+    const bool zero = j < name.size() && name[j] == '0';
+    if (zero) ++j;
+    const size_t digits_begin = j;
+    while (j < name.size() && std::isdigit(static_cast<unsigned char>(name[j]))) ++j;
+    if (j >= name.size() || name[j] != 'd' || j - digits_begin > 2) continue;
+    out.prefix = name.substr(0, i);
+    out.suffix = name.substr(j + 1);
+    out.zero_pad = zero;
+    out.width = j > digits_begin ? std::stoi(name.substr(digits_begin, j - digits_begin)) : 0;
+    return out.suffix.find('%') == std::string::npos && out.prefix.find('%') == std::string::npos;
+  }
+  return false;
 }
 
 bool has_extension(const fs::path& p, const std::vector<std::string>& exts) {
@@ -80,7 +86,8 @@ std::string format_pattern(const std::string& pattern, std::int64_t number) {
   PatternParts parts;
   if (!split_pattern(p.filename().string(), parts)) return pattern;
   std::string digits = std::to_string(number);
-  if (int(digits.size()) < parts.width) digits.insert(0, size_t(parts.width) - digits.size(), parts.zero_pad ? '0' : ' ');
+  if (int(digits.size()) < parts.width)
+    digits.insert(0, size_t(parts.width) - digits.size(), parts.zero_pad ? '0' : ' ');
   return (p.parent_path() / (parts.prefix + digits + parts.suffix)).string();
 }
 

@@ -42,12 +42,17 @@ Columns read_header(const std::string& line, const std::string& where) {
   Columns c;
   std::vector<std::string> names = split_fields(line);
   for (int i = 0; i < int(names.size()); ++i) {
-    if (names[i] == "t") c.t = i;
-    else if (names[i] == "x") c.x = i;
-    else if (names[i] == "y") c.y = i;
-    else if (names[i] == "event") c.event = i;
+    if (names[i] == "t")
+      c.t = i;
+    else if (names[i] == "x")
+      c.x = i;
+    else if (names[i] == "y")
+      c.y = i;
+    else if (names[i] == "event")
+      c.event = i;
   }
-  if (c.t < 0 || c.x < 0 || c.y < 0) throw InputError(where + ": header must name the columns t,x,y (and optionally event)");
+  if (c.t < 0 || c.x < 0 || c.y < 0)
+    throw InputError(where + ": header must name the columns t,x,y (and optionally event)");
   return c;
 }
 

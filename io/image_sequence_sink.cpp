@@ -31,8 +31,7 @@ void ImageSequenceSink::write(const DisplayFrame& frame) {
     cv::Mat bgr;
     cv::cvtColor(frame.code, bgr, cv::COLOR_RGB2BGR);
     std::vector<unsigned char> bytes;
-    if (!cv::imencode(".png", bgr, bytes))
-      throw OutputError(file.final_path().string() + ": PNG encoding failed");
+    if (!cv::imencode(".png", bgr, bytes)) throw OutputError(file.final_path().string() + ": PNG encoding failed");
     write_all(file, bytes);
   }
   files_.push_back(std::move(file));

@@ -4,13 +4,9 @@
 
 namespace eyestream::io {
 
-Chromaticities rec709_chromaticities() {
-  return {0.640, 0.330, 0.300, 0.600, 0.150, 0.060, 0.3127, 0.3290};
-}
+Chromaticities rec709_chromaticities() { return {0.640, 0.330, 0.300, 0.600, 0.150, 0.060, 0.3127, 0.3290}; }
 
-Chromaticities bt2020_chromaticities() {
-  return {0.708, 0.292, 0.170, 0.797, 0.131, 0.046, 0.3127, 0.3290};
-}
+Chromaticities bt2020_chromaticities() { return {0.708, 0.292, 0.170, 0.797, 0.131, 0.046, 0.3127, 0.3290}; }
 
 namespace {
 

@@ -32,8 +32,8 @@ fs::path canonical_or_absolute(const fs::path& p) {
 fs::path make_temp_name(const fs::path& final_path) {
   static std::atomic<unsigned> counter{0};
   fs::path dir = final_path.parent_path();
-  std::string name = "." + final_path.filename().string() + ".partial-" +
-                     std::to_string(::getpid()) + "-" + std::to_string(counter++);
+  std::string name =
+      "." + final_path.filename().string() + ".partial-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
   return dir / name;
 }
 

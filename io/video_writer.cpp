@@ -10,7 +10,6 @@ extern "C" {
 }
 
 #include <cmath>
-
 #include <opencv2/core.hpp>
 
 #include "io/error.hpp"

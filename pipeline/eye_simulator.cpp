@@ -16,8 +16,7 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
   const retina::LogLuminanceField field(frame.rgb, plan_.dark_cd_m2);
   double target = plan_.dark_log;
   for (const GazeSegment& seg : segments) {
-    target = seg.eye_closed ? plan_.dark_log
-                            : field.patch_mean(seg.x, seg.y, plan_.patch_half_px, plan_.surround_log);
+    target = seg.eye_closed ? plan_.dark_log : field.patch_mean(seg.x, seg.y, plan_.patch_half_px, plan_.surround_log);
     if (!adaptation_) adaptation_ = target;
     adaptation_ = retina::adaptation_step(*adaptation_, target, seg.duration(), plan_.adaptation);
   }
@@ -27,8 +26,10 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
   out.index = frame.index;
   out.time_s = frame.time_s;
   const retina::ToneCurve curve(*adaptation_, plan_.tone);
-  if (last.eye_closed) out.linear = cv::Mat::zeros(frame.rgb.size(), CV_32FC3);
-  else retina::tone_map(frame.rgb, curve, out.linear);
+  if (last.eye_closed)
+    out.linear = cv::Mat::zeros(frame.rgb.size(), CV_32FC3);
+  else
+    retina::tone_map(frame.rgb, curve, out.linear);
   if (plan_.needs != io::SinkNeeds::kLinear)
     retina::encode_display(out.linear, plan_.needs == io::SinkNeeds::kCode16 ? 16 : 8, frame.index, plan_.encoding,
                            out.code);

@@ -1,9 +1,8 @@
 // The eyestream command-line program.
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
 #include <string>
-
-#include <CLI/CLI.hpp>
 
 #include "io/error.hpp"
 #include "pipeline/exit_codes.hpp"
@@ -31,8 +30,9 @@ int fail(ExitCode code, const std::string& message) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"eyestream: filters HDR video through a model of one viewer's eye and writes what that viewer "
-               "would see on an ordinary display."};
+  CLI::App app{
+      "eyestream: filters HDR video through a model of one viewer's eye and writes what that viewer "
+      "would see on an ordinary display."};
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "every option of every command");
 
@@ -49,14 +49,16 @@ int main(int argc, char** argv) {
 
   samples::SceneOptions scene;
   std::string scene_name;
-  CLI::App* sample_cmd = app.add_subcommand("sample", "generate a built-in scene: DIR/frames/%05d.exr and DIR/gaze.csv");
+  CLI::App* sample_cmd =
+      app.add_subcommand("sample", "generate a built-in scene: DIR/frames/%05d.exr and DIR/gaze.csv");
   sample_cmd->footer(scene_list());
   sample_cmd->add_option("scene", scene_name, "scene name")->required();
   sample_cmd->add_option("-o,--output", scene.out_dir, "output folder")->required();
   sample_cmd->add_option("--width", scene.width, "frame width [px]")->check(CLI::Range(16, 8192));
   sample_cmd->add_option("--height", scene.height, "frame height [px]")->check(CLI::Range(16, 8192));
   sample_cmd->add_option("--fps", scene.fps, "frame rate [1/s]")->check(CLI::Range(1.0, 1000.0));
-  sample_cmd->add_option("--duration", scene.duration_s, "length [s]; 0: the scene's own")->check(CLI::Range(0.0, 3600.0));
+  sample_cmd->add_option("--duration", scene.duration_s, "length [s]; 0: the scene's own")
+      ->check(CLI::Range(0.0, 3600.0));
   sample_cmd->add_option("--seed", scene.seed, "seed of the scene's random choices");
 
   try {

@@ -1,13 +1,12 @@
 #include "pipeline/parameter.hpp"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
-#include <sstream>
-
-#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "io/error.hpp"
 
@@ -28,8 +27,8 @@ double parse_number(const Param& p, const std::string& text, const std::string& 
   if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v))
     throw UsageError(where + ": '" + text + "' is not a number");
   if (v < p.min || v > p.max)
-    throw UsageError(where + ": " + text + " is outside its range " + number_text(p.min) + " to " +
-                     number_text(p.max) + (p.unit.empty() ? "" : " " + p.unit));
+    throw UsageError(where + ": " + text + " is outside its range " + number_text(p.min) + " to " + number_text(p.max) +
+                     (p.unit.empty() ? "" : " " + p.unit));
   return v;
 }
 
@@ -47,8 +46,8 @@ std::string range_text(const Param& p) {
 
 }  // namespace
 
-Param number(std::string name, std::string unit, std::string help, std::string group, ParamTarget target,
-             double min, double max) {
+Param number(std::string name, std::string unit, std::string help, std::string group, ParamTarget target, double min,
+             double max) {
   return Param{std::move(name), std::move(unit), std::move(help), std::move(group), target, min, max, {}};
 }
 
@@ -80,9 +79,12 @@ void ParamSet::set_text(const Param& p, const std::string& text, const std::stri
   if (!p.choices.empty() && std::find(p.choices.begin(), p.choices.end(), text) == p.choices.end())
     throw UsageError(where + ": '" + text + "' is not one of " + range_text(p));
   if (auto* b = std::get_if<bool*>(&p.target)) {
-    if (text == "true" || text == "1" || text == "on") **b = true;
-    else if (text == "false" || text == "0" || text == "off") **b = false;
-    else throw UsageError(where + ": '" + text + "' is not true or false");
+    if (text == "true" || text == "1" || text == "on")
+      **b = true;
+    else if (text == "false" || text == "0" || text == "off")
+      **b = false;
+    else
+      throw UsageError(where + ": '" + text + "' is not true or false");
   } else if (auto* s = std::get_if<std::string*>(&p.target)) {
     **s = text;
   } else if (auto* d = std::get_if<double*>(&p.target)) {
@@ -92,14 +94,18 @@ void ParamSet::set_text(const Param& p, const std::string& text, const std::stri
   } else {
     const double v = parse_number(p, text, where);
     if (v != std::floor(v)) throw UsageError(where + ": '" + text + "' is not a whole number");
-    if (auto* i = std::get_if<int*>(&p.target)) **i = int(v);
-    else **std::get_if<std::int64_t*>(&p.target) = std::int64_t(v);
+    if (auto* i = std::get_if<int*>(&p.target))
+      **i = int(v);
+    else
+      **std::get_if<std::int64_t*>(&p.target) = std::int64_t(v);
   }
 }
 
 void ParamSet::set_json(const Param& p, const nlohmann::json& value, const std::string& origin) {
-  if (value.is_string()) set_text(p, value.get<std::string>(), origin);
-  else if (value.is_boolean()) set_text(p, value.get<bool>() ? "true" : "false", origin);
+  if (value.is_string())
+    set_text(p, value.get<std::string>(), origin);
+  else if (value.is_boolean())
+    set_text(p, value.get<bool>() ? "true" : "false", origin);
   else if (value.is_number()) {
     std::ostringstream s;
     s.precision(17);

@@ -4,12 +4,11 @@
 #pragma once
 
 #include <cstdint>
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
 #include <variant>
 #include <vector>
-
-#include <nlohmann/json_fwd.hpp>
 
 namespace CLI {
 class App;
@@ -34,8 +33,8 @@ struct Param {
 };
 
 // Declarations by kind.
-Param number(std::string name, std::string unit, std::string help, std::string group, ParamTarget target,
-             double min, double max);
+Param number(std::string name, std::string unit, std::string help, std::string group, ParamTarget target, double min,
+             double max);
 Param flag(std::string name, std::string help, std::string group, bool* target);
 Param choice(std::string name, std::string help, std::string group, ParamTarget target,
              std::vector<std::string> choices);

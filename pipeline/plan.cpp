@@ -8,8 +8,7 @@
 namespace eyestream::pipeline {
 
 Plan compile_plan(const Settings& s, const io::SourceInfo& source, io::SinkNeeds needs) {
-  if (!(s.tone.plateau_low < s.tone.plateau_high))
-    throw UsageError("--plateau-low must be below --plateau-high");
+  if (!(s.tone.plateau_low < s.tone.plateau_high)) throw UsageError("--plateau-low must be below --plateau-high");
   Plan p;
   p.width = source.width;
   p.height = source.height;

@@ -2,9 +2,8 @@
 
 #include <cstdio>
 #include <memory>
-#include <sstream>
-
 #include <opencv2/core.hpp>
+#include <sstream>
 
 #include "io/error.hpp"
 #include "io/exr_sequence_source.hpp"

@@ -20,8 +20,7 @@ ParamSet run_parameters(Settings& s) {
                  &s.geometry.fov_deg, 0, 179));
   set.add(number("display-diagonal", "m", "display diagonal; the frame fills the display", view,
                  &s.geometry.display_diagonal_m, 0.01, 100));
-  set.add(number("viewing-distance", "m", "eye to display distance", view, &s.geometry.viewing_distance_m, 0.01,
-                 1000));
+  set.add(number("viewing-distance", "m", "eye to display distance", view, &s.geometry.viewing_distance_m, 0.01, 1000));
   set.add(number("surround", "cd/m^2", "luminance seen outside the frame", view, &s.surround_cd_m2, 0, 1e9));
   // Retina.
   set.add(number("adapt-rate-up", "log10 units/s", "adaptation rate toward brighter (a1)", eye,
@@ -33,11 +32,10 @@ ParamSet run_parameters(Settings& s) {
   set.add(number("tone-exponent", "", "Naka-Rushton exponent n", eye, &s.tone.exponent, 0.1, 3));
   set.add(number("plateau-low", "", "steady response M to darkness", eye, &s.tone.plateau_low, 1e-4, 0.99));
   set.add(number("plateau-high", "", "steady response M to daylight", eye, &s.tone.plateau_high, 1e-4, 0.99));
-  set.add(number("plateau-mid", "log10 cd/m^2", "luminance where M is halfway", eye, &s.tone.plateau_mid_log, -8,
-                 10));
+  set.add(number("plateau-mid", "log10 cd/m^2", "luminance where M is halfway", eye, &s.tone.plateau_mid_log, -8, 10));
   set.add(number("plateau-width", "log10 units", "width of M's rise", eye, &s.tone.plateau_width_log, 0.05, 10));
-  set.add(number("dark-luminance", "cd/m^2", "what closed eyes see; floor of all luminances", eye, &s.dark_cd_m2,
-                 1e-12, 1));
+  set.add(number("dark-luminance", "cd/m^2", "what closed eyes see; floor of all luminances", eye, &s.dark_cd_m2, 1e-12,
+                 1));
   // Output.
   set.add(number("gamma", "", "display value J^gamma", out, &s.encoding.gamma, 0.1, 3));
   set.add(flag("dither", "temporal dithering before quantisation", out, &s.encoding.dither));

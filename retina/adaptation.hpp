@@ -5,8 +5,8 @@
 namespace eyestream::retina {
 
 struct AdaptationParams {
-  double rate_up_log_per_s = 0.75;    // a1, toward brighter (seed 001 App. A)
-  double rate_down_log_per_s = 0.2;   // a2, toward darker (seed 001 App. A)
+  double rate_up_log_per_s = 0.75;   // a1, toward brighter (seed 001 App. A)
+  double rate_down_log_per_s = 0.2;  // a2, toward darker (seed 001 App. A)
 };
 
 // One step of duration dt_s >= 0 from adaptation A (log10 cd/m^2) toward

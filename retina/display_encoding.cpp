@@ -14,23 +14,26 @@ void encode_rows(const cv::Mat& linear, std::int64_t frame, const EncodingParams
   const float gamma = float(p.gamma);
   cv::parallel_for_(cv::Range(0, linear.rows), [&](const cv::Range& rows) {
     for (int y = rows.start; y < rows.end; ++y) {
-      const float* in = linear.ptr<float>(y);
+      const cv::Vec3f* in = linear.ptr<cv::Vec3f>(y);
       T* out = code.ptr<T>(y);
-      for (int i = 0; i < linear.cols * 3; ++i) {
-        float j = in[i];
-        j = std::isfinite(j) ? std::clamp(j, 0.0f, 1.0f) : 0.0f;
-        const float v = std::pow(j, gamma) * max_code;
-        float q;
-        if (p.dither) {
-          // MODEL.md 3: round up with probability equal to the fractional part.
-          const float u = hash_uniform(hash_key(p.seed, std::uint64_t(RandomStream::kDither), std::uint64_t(frame),
-                                                std::uint64_t(i / 3), std::uint64_t(y), std::uint64_t(i % 3)));
-          const float lo = std::floor(v);
-          q = lo + ((v - lo) > u ? 1.0f : 0.0f);
-        } else {
-          q = std::nearbyint(v);
+      const std::uint64_t row_key =
+          hash_row(p.seed, std::uint64_t(RandomStream::kDither), std::uint64_t(frame), std::uint64_t(y));
+      for (int x = 0; x < linear.cols; ++x) {
+        const std::uint64_t key = p.dither ? hash_pixel(row_key, std::uint64_t(x)) : 0;
+        for (int c = 0; c < 3; ++c) {
+          float j = in[x][c];
+          j = std::isfinite(j) ? std::clamp(j, 0.0f, 1.0f) : 0.0f;
+          const float v = std::pow(j, gamma) * max_code;
+          float q;
+          if (p.dither) {
+            // MODEL.md 3: round up with probability equal to the fractional part.
+            const float lo = std::floor(v);
+            q = lo + ((v - lo) > hash_uniform3(key, c) ? 1.0f : 0.0f);
+          } else {
+            q = std::nearbyint(v);
+          }
+          out[3 * x + c] = T(std::min(q, max_code));
         }
-        out[i] = T(std::min(q, max_code));
       }
     }
   });
@@ -38,8 +41,7 @@ void encode_rows(const cv::Mat& linear, std::int64_t frame, const EncodingParams
 
 }  // namespace
 
-void encode_display(const cv::Mat& linear, int bits, std::int64_t frame_index, const EncodingParams& p,
-                    cv::Mat& code) {
+void encode_display(const cv::Mat& linear, int bits, std::int64_t frame_index, const EncodingParams& p, cv::Mat& code) {
   CV_Assert(linear.type() == CV_32FC3 && (bits == 8 || bits == 16));
   if (bits == 8) {
     code.create(linear.size(), CV_8UC3);

@@ -3,7 +3,6 @@
 #pragma once
 
 #include <cstdint>
-
 #include <opencv2/core.hpp>
 
 namespace eyestream::retina {
@@ -19,7 +18,6 @@ struct EncodingParams {
 // to its fractional part (per channel, pixel and frame, from a hash of
 // (seed, frame_index, x, y, channel)), else rounded to nearest. Non-finite J
 // encodes as 0. Threads over rows; bytes do not depend on the thread count.
-void encode_display(const cv::Mat& linear, int bits, std::int64_t frame_index, const EncodingParams& p,
-                    cv::Mat& code);
+void encode_display(const cv::Mat& linear, int bits, std::int64_t frame_index, const EncodingParams& p, cv::Mat& code);
 
 }  // namespace eyestream::retina

@@ -5,8 +5,8 @@
 namespace eyestream::retina {
 
 double plateau(double log_l, const ToneCurveParams& p) {
-  return p.plateau_low + (p.plateau_high - p.plateau_low) /
-                             (1.0 + std::exp(-(log_l - p.plateau_mid_log) / p.plateau_width_log));
+  return p.plateau_low +
+         (p.plateau_high - p.plateau_low) / (1.0 + std::exp(-(log_l - p.plateau_mid_log) / p.plateau_width_log));
 }
 
 ToneCurve::ToneCurve(double adaptation_log, const ToneCurveParams& p) {

@@ -15,11 +15,11 @@ namespace eyestream::retina {
 // (100 cd/m^2) and 0.37 in daylight (1e4 cd/m^2): display codes 0.22, 0.35,
 // 0.54 and 0.64 after gamma 0.455. Night looks dark, day mid-grey.
 struct ToneCurveParams {
-  double exponent = 0.7;            // n (seed 001 App. A)
-  double plateau_low = 0.03;        // M in total darkness
-  double plateau_high = 0.40;       // M in bright daylight
-  double plateau_mid_log = 1.5;     // log10 cd/m^2 where M is halfway
-  double plateau_width_log = 1.0;   // log10 units
+  double exponent = 0.7;           // n (seed 001 App. A)
+  double plateau_low = 0.03;       // M in total darkness
+  double plateau_high = 0.40;      // M in bright daylight
+  double plateau_mid_log = 1.5;    // log10 cd/m^2 where M is halfway
+  double plateau_width_log = 1.0;  // log10 units
 };
 
 double plateau(double log_luminance, const ToneCurveParams& p);

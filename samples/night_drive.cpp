@@ -25,9 +25,9 @@ namespace eyestream::samples {
 
 namespace {
 
-constexpr double kFovDeg = 29.3;          // matches the default viewing geometry
+constexpr double kFovDeg = 29.3;  // matches the default viewing geometry
 constexpr double kEyeHeight_m = 1.2;
-constexpr double kOwnLaneX_m = 1.75;      // camera x; road centre at 0
+constexpr double kOwnLaneX_m = 1.75;  // camera x; road centre at 0
 constexpr double kRoadHalfWidth_m = 3.5;
 constexpr double kSpeed_m_s = 15.0;
 constexpr double kLampX_m = 5.0, kLampHeight_m = 8.0, kLampSpacing_m = 35.0, kLampIntensity_cd = 2000.0;
@@ -68,24 +68,25 @@ cv::Vec3f ground(double x, double z, double travelled_m) {
   const bool edge_line = ax > kRoadHalfWidth_m - 0.15;
   const bool centre_dash = ax < 0.075 && std::fmod(z + travelled_m, 12.0) < 4.0;
   const double mark = (edge_line || centre_dash) ? 3.0 : 1.0;
-  return with_luminance(kAsphalt, float(mark * (lamp + own) + 0.01)) * 0.5f + with_luminance(kSodium, float(mark * lamp)) * 0.5f;
+  return with_luminance(kAsphalt, float(mark * (lamp + own) + 0.01)) * 0.5f +
+         with_luminance(kSodium, float(mark * lamp)) * 0.5f;
 }
 
 void render_background(cv::Mat& frame, const Camera& cam, double travelled_m) {
   cv::parallel_for_(cv::Range(0, frame.rows), [&](const cv::Range& rows) {
-  for (int v = rows.start; v < rows.end; ++v) {
-    cv::Vec3f* row = frame.ptr<cv::Vec3f>(v);
-    const double dv = v + 0.5 - cam.horizon_v;
-    for (int u = 0; u < frame.cols; ++u) {
-      if (dv <= 0) {
-        row[u] = with_luminance(kSky, float(0.003 + 0.017 * std::exp(dv / (0.12 * frame.rows))));
-      } else {
-        const double z = cam.f_px * kEyeHeight_m / dv;
-        const double x = kOwnLaneX_m + (u + 0.5 - cam.cx) * z / cam.f_px;
-        row[u] = ground(x, z, travelled_m);
+    for (int v = rows.start; v < rows.end; ++v) {
+      cv::Vec3f* row = frame.ptr<cv::Vec3f>(v);
+      const double dv = v + 0.5 - cam.horizon_v;
+      for (int u = 0; u < frame.cols; ++u) {
+        if (dv <= 0) {
+          row[u] = with_luminance(kSky, float(0.003 + 0.017 * std::exp(dv / (0.12 * frame.rows))));
+        } else {
+          const double z = cam.f_px * kEyeHeight_m / dv;
+          const double x = kOwnLaneX_m + (u + 0.5 - cam.cx) * z / cam.f_px;
+          row[u] = ground(x, z, travelled_m);
+        }
       }
     }
-  }
   });
 }
 
@@ -114,7 +115,8 @@ void render_car(cv::Mat& frame, const Camera& cam, double z) {
              cam.project_v(kHeadlightHeight_m, z), cam.f_px * kHeadlightRadius_m / z, light);
 }
 
-std::vector<cv::Vec3f> star_field(const cv::Size& size, const Camera& cam, std::uint64_t seed, std::vector<cv::Point2d>& at) {
+std::vector<cv::Vec3f> star_field(const cv::Size& size, const Camera& cam, std::uint64_t seed,
+                                  std::vector<cv::Point2d>& at) {
   std::mt19937_64 rng(seed ^ 0x5eedULL);
   std::uniform_real_distribution<double> ux(0, size.width), uy(0, cam.horizon_v * 0.9), ul(1.0, 5.0);
   std::vector<cv::Vec3f> colour;

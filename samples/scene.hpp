@@ -10,7 +10,7 @@
 namespace eyestream::samples {
 
 struct SceneOptions {
-  std::string out_dir;     // receives frames/%05d.exr and gaze.csv
+  std::string out_dir;  // receives frames/%05d.exr and gaze.csv
   int width = 640;
   int height = 360;
   double fps = 30.0;

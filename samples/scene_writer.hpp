@@ -2,10 +2,9 @@
 // whiteLuminance and framesPerSecond) and DIR/gaze.csv.
 #pragma once
 
+#include <opencv2/core.hpp>
 #include <string>
 #include <vector>
-
-#include <opencv2/core.hpp>
 
 #include "io/gaze_sample.hpp"
 #include "io/staged_file.hpp"

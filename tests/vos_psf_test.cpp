@@ -1,6 +1,6 @@
-#include <gtest/gtest.h>
-
 #include "glare/vos_psf.hpp"
+
+#include <gtest/gtest.h>
 
 namespace eyestream::glare {
 namespace {

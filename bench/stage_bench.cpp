@@ -1,0 +1,66 @@
+// Per-stage cost of one 1080p frame (Google Benchmark; never asserts).
+// Run: build/bench/eyestream_stage_bench
+#include <benchmark/benchmark.h>
+
+#include <opencv2/core.hpp>
+
+#include "retina/display_encoding.hpp"
+#include "retina/log_luminance_field.hpp"
+#include "retina/tone_curve.hpp"
+#include "retina/tone_map.hpp"
+
+namespace {
+
+using namespace eyestream;
+
+cv::Mat hdr_frame(int width, int height) {
+  cv::Mat frame(height, width, CV_32FC3);
+  cv::RNG rng(1);
+  cv::Mat log_l(height, width, CV_32F);
+  rng.fill(log_l, cv::RNG::UNIFORM, -3.0, 5.0);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const float l = std::pow(10.0f, log_l.at<float>(y, x));
+      frame.at<cv::Vec3f>(y, x) = cv::Vec3f(l, l, l);
+    }
+  return frame;
+}
+
+void set_threads(const benchmark::State& state) { cv::setNumThreads(int(state.range(0))); }
+
+void BM_LogLuminanceField(benchmark::State& state) {
+  set_threads(state);
+  const cv::Mat frame = hdr_frame(1920, 1080);
+  for (auto _ : state) {
+    retina::LogLuminanceField field(frame, 1e-6);
+    benchmark::DoNotOptimize(field.patch_mean(960, 540, 48, 0));
+  }
+  state.SetItemsProcessed(state.iterations() * 1920 * 1080);
+}
+
+void BM_ToneMap(benchmark::State& state) {
+  set_threads(state);
+  const cv::Mat frame = hdr_frame(1920, 1080);
+  const retina::ToneCurve curve(1.0, retina::ToneCurveParams{});
+  cv::Mat out;
+  for (auto _ : state) retina::tone_map(frame, curve, out);
+  state.SetItemsProcessed(state.iterations() * 1920 * 1080);
+}
+
+void BM_EncodeDithered8(benchmark::State& state) {
+  set_threads(state);
+  cv::Mat linear(1080, 1920, CV_32FC3);
+  cv::randu(linear, 0.0, 1.0);
+  cv::Mat code;
+  std::int64_t frame = 0;
+  for (auto _ : state) retina::encode_display(linear, 8, frame++, retina::EncodingParams{}, code);
+  state.SetItemsProcessed(state.iterations() * 1920 * 1080);
+}
+
+BENCHMARK(BM_LogLuminanceField)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ToneMap)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_EncodeDithered8)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();

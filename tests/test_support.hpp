@@ -1,0 +1,41 @@
+// Helpers shared by the tests: scratch folders and running the program.
+#pragma once
+
+#include <filesystem>
+#include <opencv2/core.hpp>
+#include <string>
+
+namespace eyestream::test {
+
+// A fresh empty folder under the system temp folder, removed on destruction.
+class ScratchDir {
+ public:
+  ScratchDir();
+  ~ScratchDir();
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+  std::string operator/(const std::string& name) const { return (path_ / name).string(); }
+
+ private:
+  std::filesystem::path path_;
+};
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr together
+};
+
+// Runs the eyestream binary with `args` (a shell-quoted string).
+CommandResult run_eyestream(const std::string& args);
+
+// Reads a whole file as bytes.
+std::string read_bytes(const std::string& path);
+
+// Number of entries in a folder (0 if it does not exist).
+int count_entries(const std::filesystem::path& dir);
+
+// A constant CV_32FC3 frame.
+cv::Mat constant_frame(int width, int height, const cv::Vec3f& rgb);
+
+}  // namespace eyestream::test
