@@ -115,4 +115,26 @@ void write_exr(const std::string& path, const cv::Mat& rgb, const ExrWriteOption
   }
 }
 
+void write_exr_channels(const std::string& path, const std::vector<std::pair<std::string, cv::Mat>>& planes) {
+  CV_Assert(!planes.empty());
+  const cv::Size size = planes.front().second.size();
+  try {
+    Imf::Header header(size.width, size.height);
+    header.compression() = Imf::ZIP_COMPRESSION;
+    for (const auto& [name, plane] : planes) {
+      CV_Assert(plane.type() == CV_32F && plane.size() == size && plane.isContinuous());
+      header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+    }
+    Imf::OutputFile file(path.c_str(), header);
+    Imf::FrameBuffer fb;
+    for (const auto& [name, plane] : planes)
+      fb.insert(name, Imf::Slice(Imf::FLOAT, const_cast<char*>(reinterpret_cast<const char*>(plane.ptr<float>())),
+                                 sizeof(float), sizeof(float) * size_t(size.width)));
+    file.setFrameBuffer(fb);
+    file.writePixels(size.height);
+  } catch (const std::exception& e) {
+    throw OutputError(path + ": cannot write EXR: " + e.what());
+  }
+}
+
 }  // namespace eyestream::io

@@ -6,6 +6,8 @@
 #include <opencv2/core.hpp>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "io/primaries.hpp"
 
@@ -34,5 +36,9 @@ struct ExrWriteOptions {
 // Writes a CV_32FC3 RGB image to `path` (ZIP compression). The caller makes
 // the file atomic (see StagedFile) when it matters.
 void write_exr(const std::string& path, const cv::Mat& rgb, const ExrWriteOptions& options);
+
+// Writes named single-channel float planes (CV_32F, one size) to one EXR
+// file, e.g. state maps for inspection.
+void write_exr_channels(const std::string& path, const std::vector<std::pair<std::string, cv::Mat>>& planes);
 
 }  // namespace eyestream::io

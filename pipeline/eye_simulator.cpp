@@ -9,27 +9,35 @@
 
 namespace eyestream::pipeline {
 
-EyeSimulator::EyeSimulator(Plan plan) : plan_(std::move(plan)) {}
+EyeSimulator::EyeSimulator(Plan plan) : plan_(std::move(plan)), retina_(std::make_unique<RetinaStage>(plan_)) {}
 
 io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::vector<GazeSegment>& segments,
                                        FrameReport* report) {
+  // Global adaptation: one exact step per gaze segment (seed 001 eq. 3).
   const retina::LogLuminanceField field(frame.rgb, plan_.dark_cd_m2);
   double target = plan_.dark_log;
+  std::vector<double> adapted;
+  adapted.reserve(segments.size());
   for (const GazeSegment& seg : segments) {
     target = seg.eye_closed ? plan_.dark_log : field.patch_mean(seg.x, seg.y, plan_.patch_half_px, plan_.surround_log);
     if (!adaptation_) adaptation_ = target;
     adaptation_ = retina::adaptation_step(*adaptation_, target, seg.duration(), plan_.adaptation);
+    adapted.push_back(*adaptation_);
   }
   const GazeSegment& last = segments.back();
+  // Photoreceptor state on the retinal grid.
+  retina_->advance(frame.rgb, segments, adapted);
 
   io::DisplayFrame out;
   out.index = frame.index;
   out.time_s = frame.time_s;
   const retina::ToneCurve curve(*adaptation_, plan_.tone);
+  cv::Mat seen;
   if (last.eye_closed)
-    out.linear = cv::Mat::zeros(frame.rgb.size(), CV_32FC3);
+    seen = cv::Mat::zeros(frame.rgb.size(), CV_32FC3);
   else
-    retina::tone_map(frame.rgb, curve, out.linear);
+    retina::tone_map(frame.rgb, curve, seen);
+  retina_->composite(seen, last.x, last.y, out.linear);
   if (plan_.needs != io::SinkNeeds::kLinear)
     retina::encode_display(out.linear, plan_.needs == io::SinkNeeds::kCode16 ? 16 : 8, frame.index, plan_.encoding,
                            out.code);

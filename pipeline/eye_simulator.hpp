@@ -2,12 +2,14 @@
 // each scene frame (with the gaze during its interval) into a display frame.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "io/frame.hpp"
 #include "pipeline/gaze_timeline.hpp"
 #include "pipeline/plan.hpp"
+#include "pipeline/retina_stage.hpp"
 
 namespace eyestream::pipeline {
 
@@ -25,18 +27,21 @@ class EyeSimulator {
   explicit EyeSimulator(Plan plan);
 
   // Steps the state through the frame's interval, one exact step per gaze
-  // segment, and renders what the eye sees at the end of the interval
-  // (darkness while the eye is closed). On the first frame the viewer starts
+  // segment (global adaptation) or group of nearby segments (retina
+  // state), and renders what the eye sees at the end of the interval:
+  // darkness while the eye is closed, with any afterimages on top. On the first frame the viewer starts
   // adapted to the first segment's target. Non-finite pixels are counted and
   // seen as black; they never enter the state.
   io::DisplayFrame process(const io::SceneFrame& frame, const std::vector<GazeSegment>& segments,
                            FrameReport* report = nullptr);
 
   double adaptation_log() const { return adaptation_.value_or(plan_.dark_log); }
+  const RetinaStage& retina() const { return *retina_; }
 
  private:
   Plan plan_;
   std::optional<double> adaptation_;
+  std::unique_ptr<RetinaStage> retina_;
 };
 
 }  // namespace eyestream::pipeline

@@ -60,6 +60,8 @@ int main(int argc, char** argv) {
   sample_cmd->add_option("--duration", scene.duration_s, "length [s]; 0: the scene's own")
       ->check(CLI::Range(0.0, 3600.0));
   sample_cmd->add_option("--seed", scene.seed, "seed of the scene's random choices");
+  sample_cmd->add_option("--luminance", scene.luminance_cd_m2, "the scene's key luminance [cd/m^2]; 0: its own")
+      ->check(CLI::Range(0.0, 1e12));
 
   try {
     app.parse(argc, argv);

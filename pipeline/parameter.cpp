@@ -55,6 +55,10 @@ Param flag(std::string name, std::string help, std::string group, bool* target) 
   return Param{std::move(name), "", std::move(help), std::move(group), target, 0, 1, {}};
 }
 
+Param text(std::string name, std::string help, std::string group, std::string* target) {
+  return Param{std::move(name), "", std::move(help), std::move(group), target, -1e300, 1e300, {}};
+}
+
 Param choice(std::string name, std::string help, std::string group, ParamTarget target,
              std::vector<std::string> choices) {
   return Param{std::move(name), "", std::move(help), std::move(group), target, -1e300, 1e300, std::move(choices)};

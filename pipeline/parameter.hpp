@@ -36,6 +36,7 @@ struct Param {
 Param number(std::string name, std::string unit, std::string help, std::string group, ParamTarget target, double min,
              double max);
 Param flag(std::string name, std::string help, std::string group, bool* target);
+Param text(std::string name, std::string help, std::string group, std::string* target);
 Param choice(std::string name, std::string help, std::string group, ParamTarget target,
              std::vector<std::string> choices);
 

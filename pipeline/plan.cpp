@@ -18,11 +18,20 @@ Plan compile_plan(const Settings& s, const io::SourceInfo& source, io::SinkNeeds
   p.patch_half_px = 0.5 * s.adaptation_patch_deg * p.pixels_per_degree;
   p.dark_cd_m2 = s.dark_cd_m2;
   p.dark_log = std::log10(s.dark_cd_m2);
-  p.surround_log = std::log10(std::max(s.surround_cd_m2, s.dark_cd_m2));
+  p.surround_cd_m2 = std::max(s.surround_cd_m2, s.dark_cd_m2);
+  p.surround_log = std::log10(p.surround_cd_m2);
   p.adaptation = s.adaptation;
   p.tone = s.tone;
   p.encoding = s.encoding;
   p.encoding.seed = std::uint64_t(s.seed);
+  p.retina.sites_per_pixel = s.state_sites_per_pixel;
+  p.retina.double_precision = s.precision == "double";
+  p.retina.substep_tolerance_px = s.substep_tolerance_deg * p.pixels_per_degree;
+  p.retina.spread_deg2_per_s = s.afterimage_spread_deg2_per_s;
+  p.retina.receptors = s.receptors;
+  p.retina.afterimages.bleaching = s.bleaching_afterimages;
+  p.retina.afterimages.local_adaptation = s.adaptation_afterimages;
+  p.retina.fovea_sigma_px = s.afterimage_fovea_sigma_deg * p.pixels_per_degree;
   p.needs = needs;
   return p;
 }
@@ -34,7 +43,11 @@ std::string Plan::describe() const {
     << "adaptation patch = " << 2 * patch_half_px << " px\n"
     << "adaptation rates = +" << adaptation.rate_up_log_per_s << " / -" << adaptation.rate_down_log_per_s
     << " log10/s\n"
-    << "stages = adaptation, tone curve, display encoding" << (encoding.dither ? " (dithered)" : "") << "\n";
+    << "retina state = " << retina.sites_per_pixel << " sites/px, " << (retina.double_precision ? "double" : "float")
+    << ", sub-step tolerance " << retina.substep_tolerance_px << " px\n"
+    << "afterimages = " << (retina.afterimages.bleaching ? "bleaching" : "no bleaching") << ", "
+    << (retina.afterimages.local_adaptation ? "local adaptation" : "no local adaptation") << "\n"
+    << "stages = adaptation, retina, tone curve, display encoding" << (encoding.dither ? " (dithered)" : "") << "\n";
   return o.str();
 }
 

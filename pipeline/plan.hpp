@@ -7,19 +7,32 @@
 #include "io/frame_sink.hpp"
 #include "io/frame_source.hpp"
 #include "pipeline/settings.hpp"
+#include "retina/photoreceptor.hpp"
+#include "retina/retina_state.hpp"
 
 namespace eyestream::pipeline {
+
+struct RetinaPlan {
+  double sites_per_pixel = 0.5;
+  bool double_precision = false;
+  double substep_tolerance_px = 0.0;
+  double spread_deg2_per_s = 0.0;
+  retina::PhotoreceptorParams receptors;
+  retina::AfterimageOptions afterimages;
+  double fovea_sigma_px = 0.0;  // afterimage visibility fall-off; 0: none
+};
 
 struct Plan {
   int width = 0, height = 0;
   double frames_per_second = 30.0;
   double fov_deg = 0.0, pixels_per_degree = 0.0;
   double patch_half_px = 0.0;  // half side of the adaptation patch
-  double surround_log = 0.0;   // log10 cd/m^2
+  double surround_cd_m2 = 1.0, surround_log = 0.0;
   double dark_cd_m2 = 1e-6, dark_log = -6.0;
   retina::AdaptationParams adaptation;
   retina::ToneCurveParams tone;
   retina::EncodingParams encoding;
+  RetinaPlan retina;
   io::SinkNeeds needs = io::SinkNeeds::kCode8;
 
   // One "name = value" line per resolved setting.

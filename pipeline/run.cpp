@@ -52,6 +52,7 @@ RunSummary run(const Settings& s) {
     const double t1 = next ? next->time_s : current->time_s + 1.0 / info.frames_per_second;
     FrameReport report;
     sink->write(eye.process(*current, timeline.segments(current->time_s, t1), &report));
+    if (!s.state_exr.empty() && current->index == s.state_frame) eye.retina().write_state(s.state_exr);
     summary.nonfinite_pixels += report.nonfinite_pixels;
     if (s.verbose)
       std::fprintf(stderr, "frame %lld t=%.3f s gaze=(%.1f,%.1f)%s adaptation=%.3f target=%.3f\n",

@@ -1,3 +1,5 @@
+#include <cctype>
+
 #include "pipeline/parameter.hpp"
 #include "pipeline/settings.hpp"
 
@@ -36,6 +38,38 @@ ParamSet run_parameters(Settings& s) {
   set.add(number("plateau-width", "log10 units", "width of M's rise", eye, &s.tone.plateau_width_log, 0.05, 10));
   set.add(number("dark-luminance", "cd/m^2", "what closed eyes see; floor of all luminances", eye, &s.dark_cd_m2, 1e-12,
                  1));
+  // Retina state and afterimages.
+  const std::string ai = "Afterimages (retina state)";
+  const char* cone[3] = {"l", "m", "s"};
+  for (int c = 0; c < 3; ++c) {
+    set.add(number(std::string("bleach-rate-") + cone[c], "1/(cd/m^2 s)",
+                   std::string("photopigment bleaching rate b1 of ") + char(std::toupper(cone[c][0])) + " cones", ai,
+                   &s.receptors.bleach_rate[c], 0, 1));
+    set.add(number(std::string("regen-rate-") + cone[c], "1/s",
+                   std::string("photopigment regeneration rate b2 of ") + char(std::toupper(cone[c][0])) + " cones", ai,
+                   &s.receptors.regen_rate_per_s[c], 1e-6, 1e3));
+  }
+  set.add(number("calcium-influx", "1/s", "calcium influx rate c1", ai, &s.receptors.calcium_influx_per_s, 1e-6, 1e3));
+  set.add(number("calcium-efflux", "1/s", "calcium efflux rate c2", ai, &s.receptors.calcium_efflux_per_s, 1e-6, 1e3));
+  set.add(
+      number("bleaching-strength", "", "bleaching afterimage strength j1", ai, &s.receptors.bleaching_strength, 0, 10));
+  set.add(number("adaptation-strength", "", "adaptation afterimage strength j2 (an exponent)", ai,
+                 &s.receptors.adaptation_strength, 0, 5));
+  set.add(number("gain-epsilon", "of C_max", "regularises the calcium gain in the dark limit", ai,
+                 &s.receptors.gain_epsilon, 1e-6, 1));
+  set.add(flag("bleaching-afterimages", "show bleaching afterimages", ai, &s.bleaching_afterimages));
+  set.add(flag("adaptation-afterimages", "show local-adaptation afterimages", ai, &s.adaptation_afterimages));
+  set.add(number("state-resolution", "sites/px", "retina state sites per frame pixel along each axis", ai,
+                 &s.state_sites_per_pixel, 0.0625, 1));
+  set.add(choice("precision", "retina state precision", ai, &s.precision, {"float", "double"}));
+  set.add(number("substep-tolerance", "deg", "gaze samples closer than this share one state step; 0: every sample", ai,
+                 &s.substep_tolerance_deg, 0, 10));
+  set.add(number("afterimage-spread", "deg^2/s", "softening of afterimages (sigma^2 grows at this rate)", ai,
+                 &s.afterimage_spread_deg2_per_s, 0, 10));
+  set.add(number("afterimage-fovea-sigma", "deg", "afterimage visibility falls off with eccentricity; 0: no fall-off",
+                 ai, &s.afterimage_fovea_sigma_deg, 0, 180));
+  set.add(text("state-exr", "write the retina state (B, C per cone) of --state-frame to this EXR", ai, &s.state_exr));
+  set.add(number("state-frame", "", "frame whose state --state-exr writes", ai, &s.state_frame, 0, 1e12));
   // Output.
   set.add(number("gamma", "", "display value J^gamma", out, &s.encoding.gamma, 0.1, 3));
   set.add(flag("dither", "temporal dithering before quantisation", out, &s.encoding.dither));

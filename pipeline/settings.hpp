@@ -11,6 +11,7 @@
 #include "pipeline/viewing_geometry.hpp"
 #include "retina/adaptation.hpp"
 #include "retina/display_encoding.hpp"
+#include "retina/photoreceptor.hpp"
 #include "retina/tone_curve.hpp"
 
 namespace eyestream::pipeline {
@@ -30,6 +31,18 @@ struct Settings {
   double adaptation_patch_deg = 1.5;  // side of the square patch around the gaze (MODEL.md 2.1: 1-2 deg)
   double surround_cd_m2 = 1.0;        // luminance seen by retina sites looking outside the frame
   double dark_cd_m2 = 1e-6;           // what closed eyes see; floor of all log luminances
+
+  // Retina state (per-cone bleaching and calcium on a retina-fixed grid).
+  retina::PhotoreceptorParams receptors;
+  bool bleaching_afterimages = true;
+  bool adaptation_afterimages = true;
+  double state_sites_per_pixel = 0.5;          // retinal grid resolution (1: one site per frame pixel)
+  std::string precision = "float";             // state precision: float or double
+  double substep_tolerance_deg = 0.05;         // gaze samples closer than this share one state step; 0: every sample
+  double afterimage_spread_deg2_per_s = 0.01;  // softening of afterimages: sigma^2 grows at this rate
+  double afterimage_fovea_sigma_deg = 10.0;    // visibility fall-off with eccentricity (seed 001 sec. 2.4); 0: none
+  std::string state_exr;                       // write the state of frame state_frame here
+  std::int64_t state_frame = 0;
 
   // Display.
   retina::EncodingParams encoding;

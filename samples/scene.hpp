@@ -16,6 +16,7 @@ struct SceneOptions {
   double fps = 30.0;
   double duration_s = 0.0;  // 0: the scene's own length
   std::uint64_t seed = 0;
+  double luminance_cd_m2 = 0.0;  // the scene's key luminance (e.g. the flash); 0: the scene's own
 };
 
 struct Scene {

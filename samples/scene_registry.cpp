@@ -1,4 +1,6 @@
 #include "io/error.hpp"
+#include "samples/adaptation_scene.hpp"
+#include "samples/flash.hpp"
 #include "samples/night_drive.hpp"
 #include "samples/scene.hpp"
 
@@ -10,6 +12,14 @@ const std::vector<Scene>& scenes() {
        "a night road with street lamps and an oncoming car whose headlights grow from distant points to 1e5 "
        "cd/m^2; the gaze follows the road, glances at the headlights and blinks once",
        kNightDriveDuration_s, generate_night_drive},
+      {"flash",
+       "a 1/8 s neutral flash (--luminance, default 1e7 cd/m^2) of 2 deg radius on black at 0.5 s, then darkness; "
+       "gaze fixed on it: bleaching afterimages and the flight of colours",
+       kFlashDuration_s, generate_flash},
+      {"adaptation",
+       "10 s fixation between a 1000 cd/m^2 white patch and a saturated blue patch on 100 cd/m^2 grey, then "
+       "uniform grey: local-adaptation afterimages (dark, and yellowish)",
+       kAdaptationDuration_s, generate_adaptation},
   };
   return all;
 }

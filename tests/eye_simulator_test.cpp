@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "tests/test_support.hpp"
@@ -20,10 +21,14 @@ Plan test_plan() {
   return compile_plan(Settings{}, info, io::SinkNeeds::kLinear);
 }
 
-double mean_output(EyeSimulator& eye, float luminance, int index, bool closed = false) {
+cv::Scalar mean_rgb(EyeSimulator& eye, float luminance, int index, bool closed = false) {
   io::SceneFrame frame{test::constant_frame(kW, kH, {luminance, luminance, luminance}), index / kFps, index, "test"};
   const std::vector<GazeSegment> gaze = {{index / kFps, (index + 1) / kFps, kW / 2.0, kH / 2.0, closed}};
-  return cv::mean(eye.process(frame, gaze).linear)[1];
+  return cv::mean(eye.process(frame, gaze).linear);
+}
+
+double mean_output(EyeSimulator& eye, float luminance, int index, bool closed = false) {
+  return mean_rgb(eye, luminance, index, closed)[1];
 }
 
 // seed 001 sec. 2.1 and fig. 2: stepping from a dark to a bright scene, the
@@ -59,11 +64,26 @@ TEST(EyeSimulator, StartsAdaptedToTheFirstFrame) {
 }
 
 TEST(EyeSimulator, ClosedEyesSeeDarknessAndAdaptTowardIt) {
-  EyeSimulator eye(test_plan());
-  mean_output(eye, 10.0f, 0);
-  EXPECT_EQ(mean_output(eye, 10.0f, 1, true), 0.0);
-  EXPECT_LT(eye.adaptation_log(), 1.0);
-  EXPECT_GT(mean_output(eye, 10.0f, 2), 0.0);
+  // Without afterimages closed eyes see black; with them, only the faint
+  // afterimage of the 10 cd/m^2 scene (a few thousandths of the display).
+  Settings plain;
+  plain.bleaching_afterimages = plain.adaptation_afterimages = false;
+  io::SourceInfo info;
+  info.width = kW;
+  info.height = kH;
+  info.frames_per_second = kFps;
+  EyeSimulator without(compile_plan(plain, info, io::SinkNeeds::kLinear)), with(test_plan());
+  mean_output(without, 10.0f, 0);
+  mean_output(with, 10.0f, 0);
+  EXPECT_EQ(mean_output(without, 10.0f, 1, true), 0.0);
+  // A dim scene bleaches mostly L cones: a reddish afterimage (H, seed 001).
+  const cv::Scalar afterimage_rgb = mean_rgb(with, 10.0f, 1, true);
+  const double afterimage = std::max({afterimage_rgb[0], afterimage_rgb[1], afterimage_rgb[2]});
+  EXPECT_GT(afterimage, 0.0);
+  EXPECT_EQ(afterimage, afterimage_rgb[0]);
+  EXPECT_LT(afterimage, 0.005);
+  EXPECT_LT(with.adaptation_log(), 1.0);
+  EXPECT_GT(mean_output(with, 10.0f, 2), 0.05);
 }
 
 TEST(EyeSimulator, NonFinitePixelsAreCountedAndNeverReachTheState) {

@@ -1,0 +1,100 @@
+#include "pipeline/retina_stage.hpp"
+
+#include <cmath>
+
+#include "io/exr_file.hpp"
+#include "io/staged_file.hpp"
+#include "retina/afterimage_composite.hpp"
+
+namespace eyestream::pipeline {
+
+namespace {
+
+struct StepGroup {
+  double dt = 0.0, x = 0.0, y = 0.0;
+  bool closed = false;
+  size_t last = 0;  // index of the group's last segment
+};
+
+// Merges consecutive segments with one eye state and a gaze within
+// `tolerance_px` of the group's first; the group's gaze is the
+// time-weighted mean.
+std::vector<StepGroup> group_segments(const std::vector<GazeSegment>& segments, double tolerance_px) {
+  std::vector<StepGroup> groups;
+  double first_x = 0, first_y = 0, wx = 0, wy = 0;
+  for (size_t i = 0; i < segments.size(); ++i) {
+    const GazeSegment& s = segments[i];
+    const bool joins = !groups.empty() && groups.back().closed == s.eye_closed &&
+                       std::hypot(s.x - first_x, s.y - first_y) <= tolerance_px;
+    if (!joins) {
+      groups.push_back({0.0, s.x, s.y, s.eye_closed, i});
+      first_x = s.x;
+      first_y = s.y;
+      wx = wy = 0;
+    }
+    StepGroup& g = groups.back();
+    g.dt += s.duration();
+    wx += s.x * s.duration();
+    wy += s.y * s.duration();
+    if (g.dt > 0) {
+      g.x = wx / g.dt;
+      g.y = wy / g.dt;
+    }
+    g.last = i;
+  }
+  return groups;
+}
+
+}  // namespace
+
+RetinaStage::RetinaStage(const Plan& plan)
+    : plan_(plan),
+      grid_(plan.width, plan.height, plan.retina.sites_per_pixel),
+      state_(grid_.size(), plan.retina.receptors, plan.retina.double_precision),
+      visibility_(grid_.foveal_falloff(plan.retina.fovea_sigma_px)) {
+  const int type = plan.retina.double_precision ? CV_64FC3 : CV_32FC3;
+  dark_ = cv::Mat(grid_.size(), type, cv::Scalar::all(plan.dark_cd_m2));
+}
+
+void RetinaStage::advance(const cv::Mat& rgb, const std::vector<GazeSegment>& segments,
+                          const std::vector<double>& adaptation_log) {
+  const cv::Mat lms = retina::to_cone_stimulus(rgb, plan_.retina.double_precision ? CV_64F : CV_32F);
+  const cv::Scalar surround = cv::Scalar::all(plan_.surround_cd_m2);
+  double frame_dt = 0.0;
+  for (const StepGroup& g : group_segments(segments, plan_.retina.substep_tolerance_px)) {
+    const cv::Mat stimulus = g.closed ? dark_ : grid_.sample(lms, g.x, g.y, surround);
+    const retina::ToneCurve curve(adaptation_log[g.last], plan_.tone);
+    if (!started_) {
+      state_.rest(stimulus, curve);
+      started_ = true;
+    }
+    state_.step(stimulus, curve, g.dt);
+    frame_dt += g.dt;
+  }
+  // Soft afterimages: the departure from equilibrium spreads as sigma^2 =
+  // rate * dt, so the look does not depend on the frame rate.
+  const double sigma_deg = std::sqrt(plan_.retina.spread_deg2_per_s * frame_dt);
+  state_.soften(sigma_deg * plan_.pixels_per_degree * grid_.sites_per_pixel());
+}
+
+void RetinaStage::composite(const cv::Mat& tone_mapped, double gaze_x, double gaze_y, cv::Mat& out) const {
+  const retina::AfterimageMaps maps = state_.afterimages(plan_.retina.afterimages, visibility_);
+  const cv::Mat gain = grid_.draw(maps.gain, gaze_x, gaze_y, cv::Scalar::all(1.0));
+  const cv::Mat bleach = grid_.draw(maps.bleach, gaze_x, gaze_y, cv::Scalar::all(0.0));
+  retina::composite_afterimages(tone_mapped, gain, bleach, out);
+}
+
+void RetinaStage::write_state(const std::string& path) const {
+  std::vector<cv::Mat> b, c;
+  cv::Mat b32, c32;
+  state_.bleached().convertTo(b32, CV_32FC3);
+  state_.calcium().convertTo(c32, CV_32FC3);
+  cv::split(b32, b);
+  cv::split(c32, c);
+  io::StagedFile file(path);
+  io::write_exr_channels(file.temp_path().string(),
+                         {{"B.L", b[0]}, {"B.M", b[1]}, {"B.S", b[2]}, {"C.L", c[0]}, {"C.M", c[1]}, {"C.S", c[2]}});
+  file.commit();
+}
+
+}  // namespace eyestream::pipeline

@@ -1,0 +1,154 @@
+#include "retina/retina_state.hpp"
+
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+namespace eyestream::retina {
+
+namespace {
+
+template <typename T>
+using Px = cv::Vec<T, 3>;
+
+template <typename T>
+T stimulus(T v) {
+  return (std::isfinite(v) && v > T(0)) ? v : T(0);
+}
+
+// Equilibrium bleaching B_inf and response R of each site for a stimulus.
+template <typename T>
+void equilibrium(const cv::Mat& lms, const ToneCurve& curve, const PhotoreceptorParams& p, cv::Mat& b_inf,
+                 cv::Mat& response) {
+  b_inf.create(lms.size(), lms.type());
+  response.create(lms.size(), lms.type());
+  cv::parallel_for_(cv::Range(0, lms.rows), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      const Px<T>* s = lms.ptr<Px<T>>(y);
+      Px<T>* b = b_inf.ptr<Px<T>>(y);
+      Px<T>* r = response.ptr<Px<T>>(y);
+      for (int x = 0; x < lms.cols; ++x)
+        for (int c = 0; c < 3; ++c) {
+          const T i = stimulus(s[x][c]);
+          b[x][c] = bleach_equilibrium<T>(i, T(p.bleach_rate[c]), T(p.regen_rate_per_s[c]));  // seed 001 eq. 6
+          r[x][c] = T(curve.response(float(i)));                                              // seed 001 eq. 1
+        }
+    }
+  });
+}
+
+template <typename T>
+void step_sites(const cv::Mat& lms, const cv::Mat& response, const PhotoreceptorParams& p, double c_max, double dt,
+                cv::Mat& bleached, cv::Mat& deficit) {
+  const T decay = std::exp(-T(p.calcium_efflux_per_s) * T(dt));
+  cv::parallel_for_(cv::Range(0, lms.rows), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      const Px<T>* s = lms.ptr<Px<T>>(y);
+      const Px<T>* r = response.ptr<Px<T>>(y);
+      Px<T>* b = bleached.ptr<Px<T>>(y);
+      Px<T>* d = deficit.ptr<Px<T>>(y);
+      for (int x = 0; x < lms.cols; ++x)
+        for (int c = 0; c < 3; ++c) {
+          const T i = stimulus(s[x][c]);
+          b[x][c] =
+              std::clamp(bleach_step<T>(b[x][c], i, T(dt), T(p.bleach_rate[c]), T(p.regen_rate_per_s[c])), T(0), T(1));
+          const T d_inf = T(c_max) * r[x][c];                                       // seed 001 eq. 10 as a deficit
+          d[x][c] = std::clamp((d[x][c] - d_inf) * decay + d_inf, T(0), T(c_max));  // seed 001 eq. 9
+        }
+    }
+  });
+}
+
+template <typename T>
+void afterimage_sites(const PhotoreceptorParams& p, double c_max, const AfterimageOptions& o, const cv::Mat& bleached,
+                      const cv::Mat& deficit, const cv::Mat& bleached_rest, const cv::Mat& response,
+                      const cv::Mat& visibility, AfterimageMaps& maps) {
+  maps.gain.create(bleached.size(), CV_32FC3);
+  maps.bleach.create(bleached.size(), CV_32FC3);
+  cv::parallel_for_(cv::Range(0, bleached.rows), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      const Px<T>* b = bleached.ptr<Px<T>>(y);
+      const Px<T>* d = deficit.ptr<Px<T>>(y);
+      const Px<T>* b_inf = bleached_rest.ptr<Px<T>>(y);
+      const Px<T>* r = response.ptr<Px<T>>(y);
+      const float* visible = visibility.ptr<float>(y);
+      cv::Vec3f* gain = maps.gain.ptr<cv::Vec3f>(y);
+      cv::Vec3f* bleach = maps.bleach.ptr<cv::Vec3f>(y);
+      for (int x = 0; x < bleached.cols; ++x)
+        for (int c = 0; c < 3; ++c) {
+          double g = 1.0, j = 0.0;
+          if (o.local_adaptation)  // seed 001 eqs. 11-12: alpha^j2
+            g = std::pow(double(local_gain<T>(d[x][c], r[x][c], T(c_max), T(p.gain_epsilon))), p.adaptation_strength);
+          if (o.bleaching)  // seed 001 eq. 12: j1 (C / C_max) max(B - B_inf, 0)
+            j = p.bleaching_strength * (1.0 - double(d[x][c]) / c_max) * std::max(double(b[x][c] - b_inf[x][c]), 0.0);
+          gain[x][c] = float(1.0 + visible[x] * (g - 1.0));
+          bleach[x][c] = float(visible[x] * j);
+        }
+    }
+  });
+}
+
+bool is_double(const cv::Mat& m) { return m.depth() == CV_64F; }
+
+}  // namespace
+
+RetinaState::RetinaState(cv::Size grid, const PhotoreceptorParams& params, bool double_precision)
+    : params_(params), c_max_(params.calcium_influx_per_s / params.calcium_efflux_per_s) {
+  const int type = double_precision ? CV_64FC3 : CV_32FC3;
+  bleached_ = cv::Mat::zeros(grid, type);
+  deficit_ = cv::Mat::zeros(grid, type);
+}
+
+void RetinaState::rest(const cv::Mat& lms, const ToneCurve& curve) {
+  CV_Assert(lms.size() == bleached_.size() && lms.type() == bleached_.type());
+  if (is_double(lms))
+    equilibrium<double>(lms, curve, params_, bleached_rest_, response_);
+  else
+    equilibrium<float>(lms, curve, params_, bleached_rest_, response_);
+  bleached_rest_.copyTo(bleached_);
+  deficit_ = response_ * c_max_;
+}
+
+void RetinaState::step(const cv::Mat& lms, const ToneCurve& curve, double dt_s) {
+  CV_Assert(lms.size() == bleached_.size() && lms.type() == bleached_.type());
+  if (is_double(lms))
+    equilibrium<double>(lms, curve, params_, bleached_rest_, response_);
+  else
+    equilibrium<float>(lms, curve, params_, bleached_rest_, response_);
+  if (!(dt_s > 0)) return;
+  if (is_double(lms))
+    step_sites<double>(lms, response_, params_, c_max_, dt_s, bleached_, deficit_);
+  else
+    step_sites<float>(lms, response_, params_, c_max_, dt_s, bleached_, deficit_);
+}
+
+void RetinaState::soften(double sigma_sites) {
+  if (!(sigma_sites > 0.05) || response_.empty()) return;
+  auto soften_one = [&](cv::Mat& state, const cv::Mat& rest, double hi) {
+    cv::Mat departure = state - rest;
+    cv::GaussianBlur(departure, departure, cv::Size(0, 0), sigma_sites, sigma_sites, cv::BORDER_REPLICATE);
+    state = rest + departure;
+    cv::max(state, 0.0, state);
+    cv::min(state, hi, state);
+  };
+  soften_one(bleached_, bleached_rest_, 1.0);
+  soften_one(deficit_, response_ * c_max_, c_max_);
+}
+
+AfterimageMaps RetinaState::afterimages(const AfterimageOptions& options, const cv::Mat& visibility) const {
+  CV_Assert(!response_.empty() && visibility.size() == bleached_.size() && visibility.type() == CV_32F);
+  AfterimageMaps maps;
+  if (is_double(bleached_))
+    afterimage_sites<double>(params_, c_max_, options, bleached_, deficit_, bleached_rest_, response_, visibility,
+                             maps);
+  else
+    afterimage_sites<float>(params_, c_max_, options, bleached_, deficit_, bleached_rest_, response_, visibility, maps);
+  return maps;
+}
+
+cv::Mat RetinaState::calcium() const {
+  cv::Mat c;
+  cv::subtract(cv::Scalar::all(c_max_), deficit_, c);
+  return c;
+}
+
+}  // namespace eyestream::retina

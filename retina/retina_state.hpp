@@ -1,0 +1,62 @@
+// Per-site, per-cone photopigment bleaching B and calcium deficit D on the
+// retinal grid, and the afterimage maps they produce (seed 001 sec. 2.2;
+// MODEL.md 2.2-2.4).
+#pragma once
+
+#include <opencv2/core.hpp>
+
+#include "retina/photoreceptor.hpp"
+#include "retina/tone_curve.hpp"
+
+namespace eyestream::retina {
+
+struct AfterimageOptions {
+  bool bleaching = true;         // bleaching afterimages (the j1 term)
+  bool local_adaptation = true;  // adaptation afterimages (the alpha^j2 gain)
+};
+
+// The two afterimage terms on the grid (both CV_32FC3, LMS):
+// `gain` = alpha^j2 per cone (1 at rest) and `bleach` = j1 (C/C_max)
+// max(B - B_inf, 0) per cone (0 at rest), faded with eccentricity.
+struct AfterimageMaps {
+  cv::Mat gain;
+  cv::Mat bleach;
+};
+
+class RetinaState {
+ public:
+  // `double_precision` keeps the state in CV_64F (reference mode).
+  RetinaState(cv::Size grid, const PhotoreceptorParams& params, bool double_precision);
+
+  // Sets every site to its equilibrium for the stimulus `lms` (grid-sized,
+  // cone stimuli >= 0 in cd/m^2-equivalents): the viewer starts at rest.
+  void rest(const cv::Mat& lms, const ToneCurve& curve);
+
+  // Advances every site by dt_s seconds at the constant stimulus `lms`,
+  // exactly (seed 001 eqs. 5 and 9). Non-finite or negative stimuli count as
+  // 0. Afterwards 0 <= B <= 1 and 0 <= D <= C_max. Remembers the stimulus's
+  // equilibrium and responses for soften() and afterimages().
+  void step(const cv::Mat& lms, const ToneCurve& curve, double dt_s);
+
+  // Blurs the departure from equilibrium for the last stimulus (B - B_inf
+  // and D - D_inf) with a Gaussian of sigma_sites: afterimages look soft
+  // (seed 001 sec. 2.4) while a retina at rest stays exactly at rest.
+  void soften(double sigma_sites);
+
+  // The afterimage terms for the last stimulus, weighted by `visibility`
+  // (CV_32F, grid-sized, in [0, 1]: the fall-off away from the fovea).
+  AfterimageMaps afterimages(const AfterimageOptions& options, const cv::Mat& visibility) const;
+
+  const cv::Mat& bleached() const { return bleached_; }  // B, LMS
+  const cv::Mat& deficit() const { return deficit_; }    // D = C_max - C, LMS
+  double calcium_max() const { return c_max_; }
+  cv::Mat calcium() const;  // C = C_max - D, LMS
+
+ private:
+  PhotoreceptorParams params_;
+  double c_max_;
+  cv::Mat bleached_, deficit_;
+  cv::Mat bleached_rest_, response_;  // B_inf and R of the last stimulus
+};
+
+}  // namespace eyestream::retina
