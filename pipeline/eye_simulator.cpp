@@ -9,7 +9,10 @@
 
 namespace eyestream::pipeline {
 
-EyeSimulator::EyeSimulator(Plan plan) : plan_(std::move(plan)), retina_(std::make_unique<RetinaStage>(plan_)) {}
+EyeSimulator::EyeSimulator(Plan plan)
+    : plan_(std::move(plan)),
+      retina_(std::make_unique<RetinaStage>(plan_)),
+      mesopic_(std::make_unique<MesopicStage>(plan_)) {}
 
 io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::vector<GazeSegment>& segments,
                                        FrameReport* report) {
@@ -36,7 +39,7 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
   if (last.eye_closed)
     seen = cv::Mat::zeros(frame.rgb.size(), CV_32FC3);
   else
-    retina::tone_map(frame.rgb, curve, seen);
+    mesopic_->render(frame.rgb, curve, *adaptation_, frame.time_s, seen);
   retina_->composite(seen, last.x, last.y, out.linear);
   if (plan_.needs != io::SinkNeeds::kLinear)
     retina::encode_display(out.linear, plan_.needs == io::SinkNeeds::kCode16 ? 16 : 8, frame.index, plan_.encoding,

@@ -8,6 +8,7 @@
 
 #include "io/frame.hpp"
 #include "pipeline/gaze_timeline.hpp"
+#include "pipeline/mesopic_stage.hpp"
 #include "pipeline/plan.hpp"
 #include "pipeline/retina_stage.hpp"
 
@@ -42,6 +43,7 @@ class EyeSimulator {
   Plan plan_;
   std::optional<double> adaptation_;
   std::unique_ptr<RetinaStage> retina_;
+  std::unique_ptr<MesopicStage> mesopic_;
 };
 
 }  // namespace eyestream::pipeline

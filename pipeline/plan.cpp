@@ -8,6 +8,8 @@
 namespace eyestream::pipeline {
 
 Plan compile_plan(const Settings& s, const io::SourceInfo& source, io::SinkNeeds needs) {
+  if (!(s.mesopic_colour.bottom_log < s.mesopic_colour.top_log))
+    throw UsageError("--mesopic-bottom must be below --mesopic-top");
   if (!(s.tone.plateau_low < s.tone.plateau_high)) throw UsageError("--plateau-low must be below --plateau-high");
   Plan p;
   p.width = source.width;
@@ -32,6 +34,10 @@ Plan compile_plan(const Settings& s, const io::SourceInfo& source, io::SinkNeeds
   p.retina.afterimages.bleaching = s.bleaching_afterimages;
   p.retina.afterimages.local_adaptation = s.adaptation_afterimages;
   p.retina.fovea_sigma_px = s.afterimage_fovea_sigma_deg * p.pixels_per_degree;
+  p.mesopic.enabled = s.mesopic;
+  p.mesopic.colour = s.mesopic_colour;
+  p.mesopic.acuity = s.acuity_loss;
+  p.mesopic.acuity_params = s.acuity;
   p.needs = needs;
   return p;
 }
@@ -47,7 +53,10 @@ std::string Plan::describe() const {
     << ", sub-step tolerance " << retina.substep_tolerance_px << " px\n"
     << "afterimages = " << (retina.afterimages.bleaching ? "bleaching" : "no bleaching") << ", "
     << (retina.afterimages.local_adaptation ? "local adaptation" : "no local adaptation") << "\n"
-    << "stages = adaptation, retina, tone curve, display encoding" << (encoding.dither ? " (dithered)" : "") << "\n";
+    << "mesopic = " << (mesopic.enabled ? "on" : "off") << " (rho from " << mesopic.colour.bottom_log << " to "
+    << mesopic.colour.top_log << " log10 cd/m^2; acuity loss " << (mesopic.acuity ? "on" : "off") << ")\n"
+    << "stages = adaptation, retina, tone curve, mesopic, display encoding" << (encoding.dither ? " (dithered)" : "")
+    << "\n";
   return o.str();
 }
 

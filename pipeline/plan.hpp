@@ -7,6 +7,8 @@
 #include "io/frame_sink.hpp"
 #include "io/frame_source.hpp"
 #include "pipeline/settings.hpp"
+#include "retina/acuity_loss.hpp"
+#include "retina/mesopic.hpp"
 #include "retina/photoreceptor.hpp"
 #include "retina/retina_state.hpp"
 
@@ -22,6 +24,13 @@ struct RetinaPlan {
   double fovea_sigma_px = 0.0;  // afterimage visibility fall-off; 0: none
 };
 
+struct MesopicPlan {
+  bool enabled = true;
+  retina::MesopicParams colour;
+  bool acuity = true;
+  retina::AcuityParams acuity_params;
+};
+
 struct Plan {
   int width = 0, height = 0;
   double frames_per_second = 30.0;
@@ -33,6 +42,7 @@ struct Plan {
   retina::ToneCurveParams tone;
   retina::EncodingParams encoding;
   RetinaPlan retina;
+  MesopicPlan mesopic;
   io::SinkNeeds needs = io::SinkNeeds::kCode8;
 
   // One "name = value" line per resolved setting.

@@ -70,6 +70,29 @@ ParamSet run_parameters(Settings& s) {
                  ai, &s.afterimage_fovea_sigma_deg, 0, 180));
   set.add(text("state-exr", "write the retina state (B, C per cone) of --state-frame to this EXR", ai, &s.state_exr));
   set.add(number("state-frame", "", "frame whose state --state-exr writes", ai, &s.state_frame, 0, 1e12));
+  // Mesopic vision.
+  const std::string meso = "Mesopic vision";
+  set.add(flag("mesopic", "mesopic effects (Purkinje shift, hue shift, acuity loss)", meso, &s.mesopic));
+  set.add(number("mesopic-top", "log10 cd/m^2", "adaptation level where vision is fully photopic (m1)", meso,
+                 &s.mesopic_colour.top_log, -8, 8));
+  set.add(number("mesopic-bottom", "log10 cd/m^2", "adaptation level where vision is fully scotopic (m2)", meso,
+                 &s.mesopic_colour.bottom_log, -8, 8));
+  set.add(flag("purkinje", "blend photopic and scotopic luminance weights by rho", meso, &s.mesopic_colour.purkinje));
+  set.add(flag("hue-shift", "colours drift toward the scotopic tint by rho", meso, &s.mesopic_colour.hue_shift));
+  const char* rgb[3] = {"r", "g", "b"};
+  for (int c = 0; c < 3; ++c)
+    set.add(number(std::string("scotopic-tint-") + rgb[c], "linear",
+                   std::string("colour a grey drifts to in the dark (dull purple), channel ") + rgb[c], meso,
+                   &s.mesopic_colour.scotopic_tint[c], 0.01, 10));
+  set.add(flag("acuity-loss", "stochastic loss of fine detail in low light", meso, &s.acuity_loss));
+  set.add(number("acuity-sigma0", "arcmin", "finest band edge; band i ends at sigma0 2^i", meso,
+                 &s.acuity.sigma0_arcmin, 0.05, 60));
+  set.add(
+      number("acuity-noise", "", "variance g of the stochastic acuity thresholds", meso, &s.acuity.noise_gain, 0, 2));
+  set.add(number("acuity-cell", "deg", "spatial spacing of the acuity noise grid", meso, &s.acuity.noise_cell_deg, 0.01,
+                 30));
+  set.add(number("acuity-period", "s", "temporal spacing of the acuity noise grid", meso, &s.acuity.noise_period_s,
+                 0.01, 60));
   // Output.
   set.add(number("gamma", "", "display value J^gamma", out, &s.encoding.gamma, 0.1, 3));
   set.add(flag("dither", "temporal dithering before quantisation", out, &s.encoding.dither));

@@ -9,8 +9,10 @@
 #include "io/exr_sequence_source.hpp"
 #include "io/sink_factory.hpp"
 #include "pipeline/viewing_geometry.hpp"
+#include "retina/acuity_loss.hpp"
 #include "retina/adaptation.hpp"
 #include "retina/display_encoding.hpp"
+#include "retina/mesopic.hpp"
 #include "retina/photoreceptor.hpp"
 #include "retina/tone_curve.hpp"
 
@@ -43,6 +45,12 @@ struct Settings {
   double afterimage_fovea_sigma_deg = 10.0;    // visibility fall-off with eccentricity (seed 001 sec. 2.4); 0: none
   std::string state_exr;                       // write the state of frame state_frame here
   std::int64_t state_frame = 0;
+
+  // Mesopic vision.
+  bool mesopic = true;
+  retina::MesopicParams mesopic_colour;
+  bool acuity_loss = true;
+  retina::AcuityParams acuity;
 
   // Display.
   retina::EncodingParams encoding;

@@ -26,4 +26,29 @@ void tone_map(const cv::Mat& rgb, const ToneCurve& curve, cv::Mat& out) {
   });
 }
 
+void tone_map(const cv::Mat& rgb, const ToneCurve& curve, const MesopicColour& m, cv::Mat& out) {
+  CV_Assert(rgb.type() == CV_32FC3);
+  out.create(rgb.size(), CV_32FC3);
+  const float rho = m.rho;
+  const cv::Vec3f tint = m.hue_shift ? m.tint_ratio * (1.0f - rho) : cv::Vec3f(0, 0, 0);
+  const float scene_share = m.hue_shift ? rho : 1.0f;
+  cv::parallel_for_(cv::Range(0, rgb.rows), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      const cv::Vec3f* in = rgb.ptr<cv::Vec3f>(y);
+      cv::Vec3f* o = out.ptr<cv::Vec3f>(y);
+      for (int x = 0; x < rgb.cols; ++x) {
+        const cv::Vec3f p = in[x];
+        const float yp = photopic_luminance(p);
+        const float ys = m.scotopic_weights.dot(p);
+        const float ym = rho * yp + (1.0f - rho) * ys;  // Purkinje: seed 001 sec. 2.3.1
+        if (!(yp > 0.0f) || !(ym > 0.0f) || !std::isfinite(ym)) {
+          o[x] = cv::Vec3f(0, 0, 0);
+          continue;
+        }
+        o[x] = (p * (scene_share / yp) + tint) * curve.response(ym);  // hue shift: seed 001 sec. 2.3.2
+      }
+    }
+  });
+}
+
 }  // namespace eyestream::retina

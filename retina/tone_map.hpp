@@ -4,6 +4,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "retina/mesopic.hpp"
 #include "retina/tone_curve.hpp"
 
 namespace eyestream::retina {
@@ -14,5 +15,12 @@ namespace eyestream::retina {
 // colours); display encoding clips them. Threads over rows; the result does
 // not depend on the thread count.
 void tone_map(const cv::Mat& rgb, const ToneCurve& curve, cv::Mat& display_linear);
+
+// Mesopic tone mapping (seed 001 secs. 2.3.1-2.3.2): the curve is applied to
+// the mesopic luminance Ym = rho Yp + (1 - rho) Ys (Purkinje shift), and
+// colour is rebuilt from rho rgb / Yp + (1 - rho) tint_ratio (hue shift and
+// desaturation toward the scotopic grey). The output's photopic luminance
+// is R(Ym), so at equal photopic luminance blue gains on red as rho falls.
+void tone_map(const cv::Mat& rgb, const ToneCurve& curve, const MesopicColour& mesopic, cv::Mat& display_linear);
 
 }  // namespace eyestream::retina

@@ -1,5 +1,6 @@
 #include "io/error.hpp"
 #include "samples/adaptation_scene.hpp"
+#include "samples/dusk.hpp"
 #include "samples/flash.hpp"
 #include "samples/night_drive.hpp"
 #include "samples/scene.hpp"
@@ -20,6 +21,10 @@ const std::vector<Scene>& scenes() {
        "10 s fixation between a 1000 cd/m^2 white patch and a saturated blue patch on 100 cd/m^2 grey, then "
        "uniform grey: local-adaptation afterimages (dark, and yellowish)",
        kAdaptationDuration_s, generate_adaptation},
+      {"dusk",
+       "a colour checker and a bar resolution target under light fading from 1e3 cd/m^2 white (--luminance) to "
+       "1e-2 and back over 24 s, gaze wandering over them: mesopic colour and acuity loss",
+       kDuskDuration_s, generate_dusk},
   };
   return all;
 }

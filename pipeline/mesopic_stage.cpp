@@ -1,0 +1,49 @@
+#include "pipeline/mesopic_stage.hpp"
+
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+#include "retina/luminance.hpp"
+#include "retina/mesopic.hpp"
+#include "retina/tone_map.hpp"
+
+namespace eyestream::pipeline {
+
+MesopicStage::MesopicStage(const Plan& plan) : plan_(plan) {
+  if (plan.mesopic.acuity)
+    acuity_ =
+        std::make_unique<retina::AcuityLoss>(plan.mesopic.acuity_params, plan.pixels_per_degree, plan.encoding.seed);
+}
+
+cv::Mat MesopicStage::acuity_level(const cv::Mat& rgb, double adaptation_log, double time_s) const {
+  // log10 of the local luminance, low-passed at the coarsest band.
+  cv::Mat luminance(rgb.size(), CV_32F);
+  rgb.forEach<cv::Vec3f>([&](const cv::Vec3f& p, const int* pos) {
+    const float l = retina::photopic_luminance(p);
+    luminance.at<float>(pos[0], pos[1]) =
+        std::isfinite(l) ? std::max(l, float(plan_.dark_cd_m2)) : float(plan_.dark_cd_m2);
+  });
+  const double sigma = acuity_->sigmas_px().back();
+  cv::GaussianBlur(luminance, luminance, cv::Size(0, 0), sigma, sigma, cv::BORDER_REPLICATE);
+  const retina::MesopicParams& m = plan_.mesopic.colour;
+  const float floor_rho = float(retina::mesopic_rho(adaptation_log, m));
+  cv::Mat rho(rgb.size(), CV_32F);
+  luminance.forEach<float>([&](const float& l, const int* pos) {
+    rho.at<float>(pos[0], pos[1]) = std::max(float(retina::mesopic_rho(std::log10(l), m)), floor_rho);
+  });
+  return acuity_->level(rho, time_s);
+}
+
+void MesopicStage::render(const cv::Mat& rgb, const retina::ToneCurve& curve, double adaptation_log, double time_s,
+                          cv::Mat& out) const {
+  retina::MesopicColour colour;
+  if (plan_.mesopic.enabled && retina::mesopic_colour(adaptation_log, plan_.mesopic.colour, colour))
+    retina::tone_map(rgb, curve, colour, out);
+  else
+    retina::tone_map(rgb, curve, out);
+  if (plan_.mesopic.enabled && acuity_ &&
+      retina::mesopic_rho(adaptation_log, plan_.mesopic.colour) < acuity_->rho_all_kept())
+    acuity_->apply(out, acuity_level(rgb, adaptation_log, time_s));
+}
+
+}  // namespace eyestream::pipeline

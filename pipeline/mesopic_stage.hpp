@@ -1,0 +1,40 @@
+// The scene as the viewer sees it at their adaptation level: tone curve with
+// mesopic colour (Purkinje shift, hue shift) and stochastic acuity loss
+// (seed 001 sec. 2.3).
+#pragma once
+
+#include <memory>
+#include <opencv2/core.hpp>
+
+#include "pipeline/plan.hpp"
+#include "retina/acuity_loss.hpp"
+#include "retina/tone_curve.hpp"
+
+namespace eyestream::pipeline {
+
+// Which luminance drives each effect: the colour effects follow the
+// adaptation level A, the state of the whole visual system (rods or cones
+// dominating), which changes smoothly with time, so colours never flicker.
+// Acuity follows the brighter of A and the local luminance low-passed at
+// the coarsest band's scale: a dark-adapted viewer still resolves a lit
+// sign, and a light-adapted one is never blurred.
+class MesopicStage {
+ public:
+  explicit MesopicStage(const Plan& plan);
+
+  // Tone-maps `rgb` (cd/m^2) with `curve` into `out`, adding the mesopic
+  // effects the adaptation level calls for. At rho(A) >= 1 the colour is
+  // the plain tone curve's; above the acuity stage's limit no band is lost:
+  // photopic frames come out bit-identical to a run without this stage.
+  void render(const cv::Mat& rgb, const retina::ToneCurve& curve, double adaptation_log, double time_s,
+              cv::Mat& out) const;
+
+  // rho + g X of the acuity loss for a frame (for reports and tests).
+  cv::Mat acuity_level(const cv::Mat& rgb, double adaptation_log, double time_s) const;
+
+ private:
+  const Plan plan_;
+  std::unique_ptr<retina::AcuityLoss> acuity_;
+};
+
+}  // namespace eyestream::pipeline

@@ -1,0 +1,57 @@
+#include "retina/acuity_loss.hpp"
+
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+namespace eyestream::retina {
+
+AcuityLoss::AcuityLoss(const AcuityParams& p, double pixels_per_degree, std::uint64_t seed) : params_(p), seed_(seed) {
+  for (int i = 0; i < p.bands; ++i) sigmas_px_.push_back(p.sigma0_arcmin * std::pow(2.0, i) / 60.0 * pixels_per_degree);
+  noise_.cell_px = std::max(1.0, p.noise_cell_deg * pixels_per_degree);
+  noise_.period_s = p.noise_period_s;
+  noise_.clip = p.noise_clip;
+}
+
+double AcuityLoss::rho_all_kept() const {
+  return (params_.bands - 0.5) / params_.bands + params_.noise_gain * params_.noise_clip;
+}
+
+cv::Mat AcuityLoss::level(const cv::Mat& rho, double t_s) const {
+  cv::Mat x = smooth_noise(rho.size(), t_s, noise_, seed_, RandomStream::kAcuity);
+  return rho + params_.noise_gain * x;  // seed 001 eq. 15: rho + g X
+}
+
+void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
+  CV_Assert(image.type() == CV_32FC3 && level.type() == CV_32F && level.size() == image.size());
+  // Blur levels L_i (sigma_i), each from the previous with the missing
+  // variance; band i = L_(i-1) - L_i. Sum of kept bands plus the residual:
+  // out = L_n + sum_i [level > tau_i] (L_(i-1) - L_i)  (seed 001 eq. 14).
+  std::vector<cv::Mat> blurred(size_t(params_.bands) + 1);
+  blurred[0] = image.clone();
+  double previous = 0.0;
+  for (int i = 0; i < params_.bands; ++i) {
+    const double extra = std::sqrt(std::max(sigmas_px_[size_t(i)] * sigmas_px_[size_t(i)] - previous * previous, 0.0));
+    previous = sigmas_px_[size_t(i)];
+    if (extra < 0.05)
+      blurred[size_t(i) + 1] = blurred[size_t(i)];
+    else
+      cv::GaussianBlur(blurred[size_t(i)], blurred[size_t(i) + 1], cv::Size(0, 0), extra, extra, cv::BORDER_REPLICATE);
+  }
+  const int bands = params_.bands;
+  cv::parallel_for_(cv::Range(0, image.rows), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      const float* lv = level.ptr<float>(y);
+      cv::Vec3f* out = image.ptr<cv::Vec3f>(y);
+      for (int x = 0; x < image.cols; ++x) {
+        cv::Vec3f sum = blurred[size_t(bands)].ptr<cv::Vec3f>(y)[x];
+        for (int i = 0; i < bands; ++i) {
+          const float tau = float((bands - i - 0.5) / bands);
+          if (lv[x] > tau) sum += blurred[size_t(i)].ptr<cv::Vec3f>(y)[x] - blurred[size_t(i) + 1].ptr<cv::Vec3f>(y)[x];
+        }
+        out[x] = sum;
+      }
+    }
+  });
+}
+
+}  // namespace eyestream::retina

@@ -1,0 +1,64 @@
+#include "retina/smooth_noise.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace eyestream::retina {
+
+namespace {
+
+// N(0,1) at grid node (i, j, n) by the Box-Muller transform of two hashed uniforms.
+float node_value(std::uint64_t seed, RandomStream stream, std::int64_t i, std::int64_t j, std::int64_t n) {
+  const std::uint64_t key =
+      hash_key(seed, std::uint64_t(stream), std::uint64_t(n), std::uint64_t(i), std::uint64_t(j), 0);
+  const double u1 = (double(key >> 11) + 0.5) / 9007199254740992.0;  // (0, 1)
+  const double u2 = hash_uniform(mix64(key));
+  return float(std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * M_PI * u2));
+}
+
+double smoothstep(double f) { return f * f * (3.0 - 2.0 * f); }
+
+}  // namespace
+
+cv::Mat smooth_noise(cv::Size size, double t_s, const SmoothNoiseParams& p, std::uint64_t seed, RandomStream stream) {
+  const int gw = int(std::ceil(size.width / p.cell_px)) + 2, gh = int(std::ceil(size.height / p.cell_px)) + 2;
+  const double tn = t_s / p.period_s;
+  const std::int64_t n0 = std::int64_t(std::floor(tn));
+  const double wt1 = smoothstep(tn - double(n0)), wt0 = 1.0 - wt1;
+  // The two time layers of nodes around t.
+  std::vector<float> layer0(size_t(gw) * gh), layer1(size_t(gw) * gh);
+  for (int j = 0; j < gh; ++j)
+    for (int i = 0; i < gw; ++i) {
+      layer0[size_t(j) * gw + i] = node_value(seed, stream, i, j, n0);
+      layer1[size_t(j) * gw + i] = node_value(seed, stream, i, j, n0 + 1);
+    }
+  cv::Mat out(size, CV_32F);
+  cv::parallel_for_(cv::Range(0, size.height), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      const double gy = (y + 0.5) / p.cell_px;
+      const int j = int(gy);
+      const double wy1 = smoothstep(gy - j), wy0 = 1.0 - wy1;
+      float* o = out.ptr<float>(y);
+      for (int x = 0; x < size.width; ++x) {
+        const double gx = (x + 0.5) / p.cell_px;
+        const int i = int(gx);
+        const double wx1 = smoothstep(gx - i), wx0 = 1.0 - wx1;
+        const double w[8] = {wx0 * wy0 * wt0, wx1 * wy0 * wt0, wx0 * wy1 * wt0, wx1 * wy1 * wt0,
+                             wx0 * wy0 * wt1, wx1 * wy0 * wt1, wx0 * wy1 * wt1, wx1 * wy1 * wt1};
+        const size_t a = size_t(j) * gw + i, b = a + 1, c = a + gw, d = c + 1;
+        const double v[8] = {layer0[a], layer0[b], layer0[c], layer0[d], layer1[a], layer1[b], layer1[c], layer1[d]};
+        double sum = 0.0, sum_sq = 0.0;
+        for (int k = 0; k < 8; ++k) {
+          sum += w[k] * v[k];
+          sum_sq += w[k] * w[k];
+        }
+        // A weighted sum of independent N(0,1) has variance sum w^2: renormalise.
+        o[x] = float(std::clamp(sum / std::sqrt(sum_sq), -p.clip, p.clip));
+      }
+    }
+  });
+  return out;
+}
+
+}  // namespace eyestream::retina
