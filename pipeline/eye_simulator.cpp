@@ -12,12 +12,23 @@ namespace eyestream::pipeline {
 EyeSimulator::EyeSimulator(Plan plan)
     : plan_(std::move(plan)),
       retina_(std::make_unique<RetinaStage>(plan_)),
-      mesopic_(std::make_unique<MesopicStage>(plan_)) {}
+      mesopic_(std::make_unique<MesopicStage>(plan_)),
+      glare_(plan_.glare.enabled ? std::make_unique<GlareStage>(plan_) : nullptr) {}
 
 io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::vector<GazeSegment>& segments,
                                        FrameReport* report) {
+  // Non-finite pixels are counted and seen as black; they reach no stage.
+  const std::int64_t nonfinite = count_nonfinite(frame.rgb);
+  const cv::Mat scene = nonfinite ? finite_copy(frame.rgb) : frame.rgb;
+  // Optics first: the retina sees the glare (MODEL.md 1). The PSF follows
+  // the adaptation at the start of the interval (the first frame's target
+  // on the first frame).
+  const double optics_log = adaptation_ ? *adaptation_ : first_target(scene, segments.front());
+  bool glare_ran = false;
+  const cv::Mat retinal = glare_ ? glare_->apply(scene, optics_log, &glare_ran) : scene;
+
   // Global adaptation: one exact step per gaze segment (seed 001 eq. 3).
-  const retina::LogLuminanceField field(frame.rgb, plan_.dark_cd_m2);
+  const retina::LogLuminanceField field(retinal, plan_.dark_cd_m2);
   double target = plan_.dark_log;
   std::vector<double> adapted;
   adapted.reserve(segments.size());
@@ -29,7 +40,7 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
   }
   const GazeSegment& last = segments.back();
   // Photoreceptor state on the retinal grid.
-  retina_->advance(frame.rgb, segments, adapted);
+  retina_->advance(retinal, segments, adapted);
 
   io::DisplayFrame out;
   out.index = frame.index;
@@ -39,7 +50,7 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
   if (last.eye_closed)
     seen = cv::Mat::zeros(frame.rgb.size(), CV_32FC3);
   else
-    mesopic_->render(frame.rgb, curve, *adaptation_, frame.time_s, seen);
+    mesopic_->render(retinal, curve, *adaptation_, frame.time_s, seen);
   retina_->composite(seen, last.x, last.y, out.linear);
   if (plan_.needs != io::SinkNeeds::kLinear)
     retina::encode_display(out.linear, plan_.needs == io::SinkNeeds::kCode16 ? 16 : 8, frame.index, plan_.encoding,
@@ -50,9 +61,16 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
     report->gaze_x = last.x;
     report->gaze_y = last.y;
     report->eye_closed = last.eye_closed;
-    report->nonfinite_pixels = count_nonfinite(frame.rgb);
+    report->nonfinite_pixels = nonfinite;
+    report->glare_ran = glare_ran;
   }
   return out;
+}
+
+double EyeSimulator::first_target(const cv::Mat& scene, const GazeSegment& first) const {
+  if (first.eye_closed) return plan_.dark_log;
+  return retina::LogLuminanceField(scene, plan_.dark_cd_m2)
+      .patch_mean(first.x, first.y, plan_.patch_half_px, plan_.surround_log);
 }
 
 }  // namespace eyestream::pipeline

@@ -8,6 +8,7 @@
 
 #include "io/frame.hpp"
 #include "pipeline/gaze_timeline.hpp"
+#include "pipeline/glare_stage.hpp"
 #include "pipeline/mesopic_stage.hpp"
 #include "pipeline/plan.hpp"
 #include "pipeline/retina_stage.hpp"
@@ -21,6 +22,7 @@ struct FrameReport {
   double gaze_x = 0.0, gaze_y = 0.0;
   bool eye_closed = false;
   std::int64_t nonfinite_pixels = 0;
+  bool glare_ran = false;  // false when nothing exceeded the display peak (or glare is off)
 };
 
 class EyeSimulator {
@@ -38,12 +40,16 @@ class EyeSimulator {
 
   double adaptation_log() const { return adaptation_.value_or(plan_.dark_log); }
   const RetinaStage& retina() const { return *retina_; }
+  const GlareStage* glare() const { return glare_.get(); }
 
  private:
+  double first_target(const cv::Mat& scene, const GazeSegment& first) const;
+
   Plan plan_;
   std::optional<double> adaptation_;
   std::unique_ptr<RetinaStage> retina_;
   std::unique_ptr<MesopicStage> mesopic_;
+  std::unique_ptr<GlareStage> glare_;
 };
 
 }  // namespace eyestream::pipeline

@@ -7,6 +7,7 @@
 #include "io/error.hpp"
 #include "pipeline/exit_codes.hpp"
 #include "pipeline/parameter.hpp"
+#include "pipeline/psf_command.hpp"
 #include "pipeline/run.hpp"
 #include "pipeline/settings.hpp"
 #include "samples/scene.hpp"
@@ -63,6 +64,17 @@ int main(int argc, char** argv) {
   sample_cmd->add_option("--luminance", scene.luminance_cd_m2, "the scene's key luminance [cd/m^2]; 0: its own")
       ->check(CLI::Range(0.0, 1e12));
 
+  Settings psf_settings;
+  PsfRequest psf;
+  ParamSet psf_params = run_parameters(psf_settings).subset({"Viewing condition", "Glare (the viewer's optics)"});
+  CLI::App* psf_cmd = app.add_subcommand("psf", "write the viewer's point-spread function (EXR and a log-scale PNG)");
+  psf_cmd->add_option("-o,--output", psf.output, "kernel EXR; the picture goes beside it as .png")->required();
+  psf_cmd->add_option("--width", psf.width, "frame width the kernel is for [px]")->check(CLI::Range(16, 8192));
+  psf_cmd->add_option("--height", psf.height, "frame height [px]")->check(CLI::Range(16, 8192));
+  psf_cmd->add_option("--adaptation", psf.adaptation_log, "adaptation level [log10 cd/m^2] (sets pupil and regime)")
+      ->check(CLI::Range(-8.0, 10.0));
+  psf_params.bind(*psf_cmd);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -75,6 +87,9 @@ int main(int argc, char** argv) {
       params.apply(settings.config);
       const RunSummary summary = run(settings);
       std::fprintf(stderr, "%s\n", summary.one_line().c_str());
+    } else if (*psf_cmd) {
+      psf_params.apply("");
+      std::printf("%s", write_psf(psf_settings, psf).text().c_str());
     } else if (*sample_cmd) {
       const samples::Scene& s = samples::find_scene(scene_name);
       s.generate(scene);

@@ -66,6 +66,13 @@ Param choice(std::string name, std::string help, std::string group, ParamTarget 
 
 void ParamSet::add(Param p) { params_.push_back(std::move(p)); }
 
+ParamSet ParamSet::subset(const std::vector<std::string>& groups) const {
+  ParamSet out;
+  for (const Param& p : params_)
+    if (std::find(groups.begin(), groups.end(), p.group) != groups.end()) out.add(p);
+  return out;
+}
+
 std::string ParamSet::value_text(const Param& p) {
   struct Visitor {
     std::string operator()(double* v) const { return number_text(*v); }

@@ -43,6 +43,8 @@ Param choice(std::string name, std::string help, std::string group, ParamTarget 
 class ParamSet {
  public:
   void add(Param p);
+  // The parameters of the named groups only (for commands that need a few).
+  ParamSet subset(const std::vector<std::string>& groups) const;
   const std::vector<Param>& params() const { return params_; }
 
   // Registers every parameter as an option of `app`. Help text shows the

@@ -22,4 +22,12 @@ std::int64_t count_nonfinite(const cv::Mat& rgb) {
   return total;
 }
 
+cv::Mat finite_copy(const cv::Mat& rgb) {
+  cv::Mat out = rgb.clone();
+  out.forEach<cv::Vec3f>([](cv::Vec3f& p, const int*) {
+    if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))) p = cv::Vec3f(0, 0, 0);
+  });
+  return out;
+}
+
 }  // namespace eyestream::pipeline

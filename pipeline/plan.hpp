@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "glare/viewer.hpp"
 #include "io/frame_sink.hpp"
 #include "io/frame_source.hpp"
 #include "pipeline/settings.hpp"
@@ -31,6 +32,13 @@ struct MesopicPlan {
   retina::AcuityParams acuity_params;
 };
 
+struct GlarePlan {
+  bool enabled = true;
+  bool full = false;
+  double display_peak_cd_m2 = 100.0;
+  glare::ViewerProfile viewer;
+};
+
 struct Plan {
   int width = 0, height = 0;
   double frames_per_second = 30.0;
@@ -41,6 +49,7 @@ struct Plan {
   retina::AdaptationParams adaptation;
   retina::ToneCurveParams tone;
   retina::EncodingParams encoding;
+  GlarePlan glare;
   RetinaPlan retina;
   MesopicPlan mesopic;
   io::SinkNeeds needs = io::SinkNeeds::kCode8;

@@ -55,9 +55,10 @@ RunSummary run(const Settings& s) {
     if (!s.state_exr.empty() && current->index == s.state_frame) eye.retina().write_state(s.state_exr);
     summary.nonfinite_pixels += report.nonfinite_pixels;
     if (s.verbose)
-      std::fprintf(stderr, "frame %lld t=%.3f s gaze=(%.1f,%.1f)%s adaptation=%.3f target=%.3f\n",
+      std::fprintf(stderr, "frame %lld t=%.3f s gaze=(%.1f,%.1f)%s adaptation=%.3f target=%.3f glare=%s\n",
                    (long long)current->index, current->time_s, report.gaze_x, report.gaze_y,
-                   report.eye_closed ? " closed" : "", report.adaptation_log, report.target_log);
+                   report.eye_closed ? " closed" : "", report.adaptation_log, report.target_log,
+                   report.glare_ran ? "ran" : "skipped (nothing above the display peak)");
     ++summary.frames;
     progress.frame_done();
     current = std::move(next);

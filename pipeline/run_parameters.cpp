@@ -38,6 +38,15 @@ ParamSet run_parameters(Settings& s) {
   set.add(number("plateau-width", "log10 units", "width of M's rise", eye, &s.tone.plateau_width_log, 0.05, 10));
   set.add(number("dark-luminance", "cd/m^2", "what closed eyes see; floor of all luminances", eye, &s.dark_cd_m2, 1e-12,
                  1));
+  // Optics.
+  const std::string optics = "Glare (the viewer's optics)";
+  set.add(flag("glare", "the eye's point-spread function before the retina", optics, &s.glare));
+  set.add(choice("glare-mode", "spread the light above the display peak (excess) or the whole image (full)", optics,
+                 &s.glare_mode, {"excess", "full"}));
+  set.add(
+      number("display-peak", "cd/m^2", "peak luminance of the display, L_dmax", view, &s.display_peak_cd_m2, 1, 1e5));
+  set.add(number("viewer-age", "years", "the viewer's age: scattered light grows as age^4", optics, &s.viewer.age_years,
+                 1, 100));
   // Retina state and afterimages.
   const std::string ai = "Afterimages (retina state)";
   const char* cone[3] = {"l", "m", "s"};

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string>
 
+#include "glare/viewer.hpp"
 #include "io/exr_sequence_source.hpp"
 #include "io/sink_factory.hpp"
 #include "pipeline/viewing_geometry.hpp"
@@ -33,6 +34,12 @@ struct Settings {
   double adaptation_patch_deg = 1.5;  // side of the square patch around the gaze (MODEL.md 2.1: 1-2 deg)
   double surround_cd_m2 = 1.0;        // luminance seen by retina sites looking outside the frame
   double dark_cd_m2 = 1e-6;           // what closed eyes see; floor of all log luminances
+
+  // Optics.
+  glare::ViewerProfile viewer;
+  bool glare = true;
+  std::string glare_mode = "excess";  // excess: spread the light above the display peak; full: everything
+  double display_peak_cd_m2 = 100.0;  // L_dmax (MODEL.md 0)
 
   // Retina state (per-cone bleaching and calcium on a retina-fixed grid).
   retina::PhotoreceptorParams receptors;

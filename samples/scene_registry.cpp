@@ -2,6 +2,7 @@
 #include "samples/adaptation_scene.hpp"
 #include "samples/dusk.hpp"
 #include "samples/flash.hpp"
+#include "samples/headlights.hpp"
 #include "samples/night_drive.hpp"
 #include "samples/scene.hpp"
 
@@ -25,6 +26,10 @@ const std::vector<Scene>& scenes() {
        "a colour checker and a bar resolution target under light fading from 1e3 cd/m^2 white (--luminance) to "
        "1e-2 and back over 24 s, gaze wandering over them: mesopic colour and acuity loss",
        kDuskDuration_s, generate_dusk},
+      {"headlights",
+       "a still night view: two 1e5 cd/m^2 headlights (--luminance) 1.4 deg apart on a 0.3 cd/m^2 road and a "
+       "0.6 cd/m^2 pedestrian 4 deg to their left, gaze on the pedestrian: glare and visibility",
+       kHeadlightsDuration_s, generate_headlights},
   };
   return all;
 }

@@ -36,9 +36,12 @@ struct Viewer {
   double time = 0.0, dt = 1.0 / kFps;
 };
 
+// Full-resolution retina state, optics off: these tests look at the
+// photoreceptors alone (a flash's glare veil would bleach the surround).
 Settings reference_settings() {
   Settings s;
   s.state_sites_per_pixel = 1.0;
+  s.glare = false;
   return s;
 }
 

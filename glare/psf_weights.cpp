@@ -1,0 +1,39 @@
+#include "glare/psf_weights.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace eyestream::glare {
+
+namespace {
+
+constexpr PsfWeights kPhotopic{0.384, 0.478, 0.138, 0.0};    // seed 000 eq. 9
+constexpr PsfWeights kMesopic{0.368, 0.478, 0.138, 0.016};   // seed 000 eq. 9
+constexpr PsfWeights kScotopic{0.282, 0.478, 0.207, 0.033};  // seed 000 eq. 9
+
+PsfWeights mix(const PsfWeights& a, const PsfWeights& b, double f) {
+  return {a.core + f * (b.core - a.core), a.inner + f * (b.inner - a.inner), a.outer + f * (b.outer - a.outer),
+          a.halo + f * (b.halo - a.halo)};
+}
+
+}  // namespace
+
+PsfWeights psf_weights(const ViewerProfile& viewer, double a, double pupil_mm) {
+  const double scotopic = -2.0, photopic = std::log10(3.0), middle = 0.5 * (scotopic + photopic);
+  PsfWeights w = a <= scotopic  ? kScotopic
+                 : a <= middle  ? mix(kScotopic, kMesopic, (a - scotopic) / (middle - scotopic))
+                 : a < photopic ? mix(kMesopic, kPhotopic, (a - middle) / (photopic - middle))
+                                : kPhotopic;
+  const double aging = 6.9e-9 * std::pow(viewer.age_years, 4.0);  // seed 000 eq. 10
+  w.core -= aging;
+  w.outer += aging;
+  const double f = std::clamp((pupil_mm - 2.5) / 1.0, 0.0, 1.0);
+  const double halo = w.halo * f * f * (3.0 - 2.0 * f);
+  w.core += w.halo - halo;
+  w.halo = halo;
+  w.core = std::max(w.core, 0.0);
+  const double sum = w.core + w.inner + w.outer + w.halo;
+  return {w.core / sum, w.inner / sum, w.outer / sum, w.halo / sum};
+}
+
+}  // namespace eyestream::glare

@@ -1,0 +1,46 @@
+#include "pipeline/glare_stage.hpp"
+
+#include "glare/psf_weights.hpp"
+#include "glare/viewer.hpp"
+#include "retina/luminance.hpp"
+
+namespace eyestream::pipeline {
+
+GlareStage::GlareStage(const Plan& plan)
+    : plan_(plan),
+      kernels_(glare::build_component_kernels(plan.width, plan.height, plan.pixels_per_degree)),
+      convolver_(std::make_unique<glare::FftConvolver>(kernels_)) {}
+
+cv::Mat GlareStage::apply(const cv::Mat& rgb, double adaptation_log, bool* ran) const {
+  const glare::PsfWeights w =
+      glare::psf_weights(plan_.glare.viewer, adaptation_log, glare::pupil_diameter_mm(adaptation_log));
+  if (plan_.glare.full) {
+    if (ran) *ran = true;
+    return convolver_->convolve(rgb, w);
+  }
+  // The excess over the display peak, with the pixel's colour (seed 000 sec.
+  // 3.2, seed 003): dL = max(L - L_dmax, 0), spread, added back.
+  const float peak = float(plan_.glare.display_peak_cd_m2);
+  cv::Mat excess(rgb.size(), CV_32FC3), kept(rgb.size(), CV_32FC3);
+  std::vector<unsigned char> row_has(size_t(rgb.rows), 0);
+  cv::parallel_for_(cv::Range(0, rgb.rows), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      const cv::Vec3f* in = rgb.ptr<cv::Vec3f>(y);
+      cv::Vec3f* e = excess.ptr<cv::Vec3f>(y);
+      cv::Vec3f* k = kept.ptr<cv::Vec3f>(y);
+      for (int x = 0; x < rgb.cols; ++x) {
+        const float l = retina::photopic_luminance(in[x]);
+        const float share = l > peak ? (l - peak) / l : 0.0f;
+        e[x] = in[x] * share;
+        k[x] = in[x] - e[x];
+        row_has[size_t(y)] |= share > 0.0f;
+      }
+    }
+  });
+  const bool any = std::any_of(row_has.begin(), row_has.end(), [](unsigned char v) { return v != 0; });
+  if (ran) *ran = any;
+  if (!any) return rgb;
+  return kept + convolver_->convolve(excess, w);
+}
+
+}  // namespace eyestream::pipeline

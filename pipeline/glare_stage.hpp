@@ -1,0 +1,34 @@
+// The eye's optics: turns the scene into the retinal image the retina sees
+// (seeds 000, 003; MODEL.md 1). Bright veils then also adapt and bleach.
+#pragma once
+
+#include <memory>
+#include <opencv2/core.hpp>
+
+#include "glare/fft_convolver.hpp"
+#include "glare/psf_kernel.hpp"
+#include "pipeline/plan.hpp"
+
+namespace eyestream::pipeline {
+
+class GlareStage {
+ public:
+  // Builds the component kernels and their spectra once for the sequence.
+  explicit GlareStage(const Plan& plan);
+
+  // The retinal image of `rgb` (finite, cd/m^2) for a viewer adapted to
+  // 10^adaptation_log. Mode "excess" spreads only the light above the
+  // display peak, colour kept (seeds 000 and 003), and adds it back; "full"
+  // spreads everything. When nothing exceeds the display peak in excess
+  // mode, returns `rgb` itself and sets *ran to false: no glare work.
+  cv::Mat apply(const cv::Mat& rgb, double adaptation_log, bool* ran = nullptr) const;
+
+  const glare::ComponentKernels& kernels() const { return kernels_; }
+
+ private:
+  const Plan plan_;
+  glare::ComponentKernels kernels_;
+  std::unique_ptr<glare::FftConvolver> convolver_;
+};
+
+}  // namespace eyestream::pipeline
