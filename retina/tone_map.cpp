@@ -7,23 +7,13 @@
 namespace eyestream::retina {
 
 void tone_map(const cv::Mat& rgb, const ToneCurve& curve, cv::Mat& out) {
-  CV_Assert(rgb.type() == CV_32FC3);
-  out.create(rgb.size(), CV_32FC3);
-  cv::parallel_for_(cv::Range(0, rgb.rows), [&](const cv::Range& rows) {
-    for (int y = rows.start; y < rows.end; ++y) {
-      const cv::Vec3f* in = rgb.ptr<cv::Vec3f>(y);
-      cv::Vec3f* o = out.ptr<cv::Vec3f>(y);
-      for (int x = 0; x < rgb.cols; ++x) {
-        const cv::Vec3f p = in[x];
-        const float l = photopic_luminance(p);
-        if (!(l > 0.0f) || !std::isfinite(l)) {
-          o[x] = cv::Vec3f(0, 0, 0);
-          continue;
-        }
-        o[x] = p * (curve.response(l) / l);
-      }
-    }
-  });
+  // Photopic: rho = 1, photopic weights, nothing of the tint.
+  MesopicColour photopic;
+  photopic.rho = 1.0f;
+  photopic.scotopic_weights = cv::Vec3f(kPhotopicR, kPhotopicG, kPhotopicB);
+  photopic.tint_ratio = cv::Vec3f(0, 0, 0);
+  photopic.hue_shift = false;
+  tone_map(rgb, curve, photopic, out);
 }
 
 void tone_map(const cv::Mat& rgb, const ToneCurve& curve, const MesopicColour& m, cv::Mat& out) {
@@ -45,7 +35,8 @@ void tone_map(const cv::Mat& rgb, const ToneCurve& curve, const MesopicColour& m
           o[x] = cv::Vec3f(0, 0, 0);
           continue;
         }
-        o[x] = (p * (scene_share / yp) + tint) * curve.response(ym);  // hue shift: seed 001 sec. 2.3.2
+        const float r = curve.response(ym);
+        o[x] = p * (scene_share * r / yp) + tint * r;  // hue shift: seed 001 sec. 2.3.2
       }
     }
   });
