@@ -5,6 +5,7 @@
 #include <string>
 
 #include "io/error.hpp"
+#include "pipeline/curves_command.hpp"
 #include "pipeline/exit_codes.hpp"
 #include "pipeline/parameter.hpp"
 #include "pipeline/psf_command.hpp"
@@ -75,6 +76,13 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(-8.0, 10.0));
   psf_params.bind(*psf_cmd);
 
+  Settings curve_settings;
+  std::string curves_output;
+  ParamSet curve_params = run_parameters(curve_settings).subset({"Retina"});
+  CLI::App* curves_cmd = app.add_subcommand("curves", "draw the tone-curve family for the tone settings (PNG)");
+  curves_cmd->add_option("-o,--output", curves_output, "PNG file")->required();
+  curve_params.bind(*curves_cmd);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -87,6 +95,9 @@ int main(int argc, char** argv) {
       params.apply(settings.config);
       const RunSummary summary = run(settings);
       std::fprintf(stderr, "%s\n", summary.one_line().c_str());
+    } else if (*curves_cmd) {
+      curve_params.apply("");
+      write_tone_curves(curve_settings.tone, curves_output);
     } else if (*psf_cmd) {
       psf_params.apply("");
       std::printf("%s", write_psf(psf_settings, psf).text().c_str());

@@ -128,6 +128,13 @@ TEST_F(EndToEnd, OutputOverAnInputIsRefusedAndTheInputKept) {
   EXPECT_EQ(test::count_entries(out_.path()), 1);
 }
 
+TEST_F(EndToEnd, CurvesCommandDrawsTheToneCurveFamily) {
+  const auto r = test::run_eyestream("curves -o " + (out_ / "c.png") + " --plateau-high 0.5");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_GT(test::read_bytes(out_ / "c.png").size(), 1000u);
+  EXPECT_EQ(test::run_eyestream("curves -o " + (out_ / "d.png") + " --plateau-high 2").exit_code, 2);
+}
+
 TEST_F(EndToEnd, HelpListsEveryOptionWithUnitDefaultAndRange) {
   const auto r = test::run_eyestream("run --help");
   EXPECT_EQ(r.exit_code, 0);
