@@ -1,22 +1,36 @@
 #include "pipeline/glare_stage.hpp"
 
+#include <opencv2/imgproc.hpp>
+
 #include "glare/psf_weights.hpp"
 #include "glare/viewer.hpp"
 #include "retina/luminance.hpp"
 
 namespace eyestream::pipeline {
 
-GlareStage::GlareStage(const Plan& plan)
-    : plan_(plan),
-      kernels_(glare::build_component_kernels(plan.width, plan.height, plan.pixels_per_degree)),
-      convolver_(std::make_unique<glare::FftConvolver>(kernels_)) {}
+GlareStage::GlareStage(const Plan& plan) : plan_(plan) {
+  if (plan.glare.gaussian) return;  // no kernels: a separable blur does the work
+  kernels_ = glare::build_component_kernels(plan.width, plan.height, plan.pixels_per_degree);
+  convolver_ = std::make_unique<glare::FftConvolver>(kernels_);
+}
 
-cv::Mat GlareStage::apply(const cv::Mat& rgb, double adaptation_log, bool* ran) const {
+cv::Mat GlareStage::spread(const cv::Mat& rgb, double adaptation_log) const {
+  if (plan_.glare.gaussian) {
+    // seed 003: a Gaussian of sigma 0.34 deg; light leaving the frame is lost.
+    const double sigma = plan_.glare.gaussian_sigma_deg * plan_.pixels_per_degree;
+    cv::Mat out;
+    cv::GaussianBlur(rgb, out, cv::Size(0, 0), sigma, sigma, cv::BORDER_CONSTANT);
+    return out;
+  }
   const glare::PsfWeights w =
       glare::psf_weights(plan_.glare.viewer, adaptation_log, glare::pupil_diameter_mm(adaptation_log));
+  return convolver_->convolve(rgb, w);
+}
+
+cv::Mat GlareStage::apply(const cv::Mat& rgb, double adaptation_log, bool* ran) const {
   if (plan_.glare.full) {
     if (ran) *ran = true;
-    return convolver_->convolve(rgb, w);
+    return spread(rgb, adaptation_log);
   }
   // The excess over the display peak, with the pixel's colour (seed 000 sec.
   // 3.2, seed 003): dL = max(L - L_dmax, 0), spread, added back.
@@ -40,7 +54,7 @@ cv::Mat GlareStage::apply(const cv::Mat& rgb, double adaptation_log, bool* ran) 
   const bool any = std::any_of(row_has.begin(), row_has.end(), [](unsigned char v) { return v != 0; });
   if (ran) *ran = any;
   if (!any) return rgb;
-  return kept + convolver_->convolve(excess, w);
+  return kept + spread(excess, adaptation_log);
 }
 
 }  // namespace eyestream::pipeline

@@ -23,9 +23,13 @@ class GlareStage {
   // mode, returns `rgb` itself and sets *ran to false: no glare work.
   cv::Mat apply(const cv::Mat& rgb, double adaptation_log, bool* ran = nullptr) const;
 
+  // The Vos component kernels (empty with the Gaussian model).
   const glare::ComponentKernels& kernels() const { return kernels_; }
 
  private:
+  // Convolves `rgb` with the frame's PSF.
+  cv::Mat spread(const cv::Mat& rgb, double adaptation_log) const;
+
   const Plan plan_;
   glare::ComponentKernels kernels_;
   std::unique_ptr<glare::FftConvolver> convolver_;

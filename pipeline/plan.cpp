@@ -36,6 +36,7 @@ Plan compile_plan(const Settings& s, const io::SourceInfo& source, io::SinkNeeds
   p.retina.fovea_sigma_px = s.afterimage_fovea_sigma_deg * p.pixels_per_degree;
   p.glare.enabled = s.glare;
   p.glare.full = s.glare_mode == "full";
+  p.glare.gaussian = s.psf_model == "gaussian";
   p.glare.display_peak_cd_m2 = s.display_peak_cd_m2;
   p.glare.viewer = s.viewer;
   p.mesopic.enabled = s.mesopic;
@@ -54,8 +55,8 @@ std::string Plan::describe() const {
     << "adaptation rates = +" << adaptation.rate_up_log_per_s << " / -" << adaptation.rate_down_log_per_s
     << " log10/s\n"
     << "glare = " << (glare.enabled ? (glare.full ? "full image" : "excess over the display peak") : "off")
-    << ", Vos PSF, viewer age " << glare.viewer.age_years << " years, display peak " << glare.display_peak_cd_m2
-    << " cd/m^2\n"
+    << (glare.gaussian ? ", Gaussian kernel (sigma 0.34 deg)" : ", Vos PSF") << ", viewer age "
+    << glare.viewer.age_years << " years, display peak " << glare.display_peak_cd_m2 << " cd/m^2\n"
     << "retina state = " << retina.sites_per_pixel << " sites/px, " << (retina.double_precision ? "double" : "float")
     << ", sub-step tolerance " << retina.substep_tolerance_px << " px\n"
     << "afterimages = " << (retina.afterimages.bleaching ? "bleaching" : "no bleaching") << ", "

@@ -41,6 +41,8 @@ ParamSet run_parameters(Settings& s) {
   // Optics.
   const std::string optics = "Glare (the viewer's optics)";
   set.add(flag("glare", "the eye's point-spread function before the retina", optics, &s.glare));
+  set.add(choice("psf-model", "the eye's PSF (vos, seed 000) or the cheap Gaussian of seed 003 (gaussian)", optics,
+                 &s.psf_model, {"vos", "gaussian"}));
   set.add(choice("glare-mode", "spread the light above the display peak (excess) or the whole image (full)", optics,
                  &s.glare_mode, {"excess", "full"}));
   set.add(

@@ -38,6 +38,7 @@ struct Settings {
   // Optics.
   glare::ViewerProfile viewer;
   bool glare = true;
+  std::string psf_model = "vos";      // vos: seed 000's PSF; gaussian: seed 003's sigma = 0.34 deg kernel
   std::string glare_mode = "excess";  // excess: spread the light above the display peak; full: everything
   double display_peak_cd_m2 = 100.0;  // L_dmax (MODEL.md 0)
 

@@ -176,5 +176,26 @@ TEST(GlareStage, FramesWithNothingAboveTheDisplayPeakSkipTheWork) {
   EXPECT_LE(cv::sum(glared)[1], cv::sum(bright)[1] * (1 + 1e-6));
 }
 
+TEST(GlareStage, GaussianModelMovesLightWithoutAddingAny) {
+  Settings s;
+  s.psf_model = "gaussian";
+  io::SourceInfo info;
+  info.width = 96;
+  info.height = 54;
+  info.frames_per_second = 30;
+  const Plan plan = compile_plan(s, info, io::SinkNeeds::kLinear);
+  const GlareStage stage(plan);
+  EXPECT_TRUE(stage.kernels().core.empty()) << "no Vos kernels built";
+  cv::Mat scene = test::constant_frame(96, 54, {1, 1, 1});
+  scene.at<cv::Vec3f>(27, 48) = cv::Vec3f(1e5f, 1e5f, 1e5f);
+  bool ran = false;
+  const cv::Mat out = stage.apply(scene, 0.0, &ran);
+  EXPECT_TRUE(ran);
+  // sigma = 0.34 deg is 1.1 px here: light reaches the neighbours, and the
+  // total stays (the source is far from the edges).
+  EXPECT_GT(out.at<cv::Vec3f>(27, 49)[1], 1000.0f);
+  EXPECT_NEAR(cv::sum(out)[1], cv::sum(scene)[1], 1e-4 * cv::sum(scene)[1]);
+}
+
 }  // namespace
 }  // namespace eyestream::pipeline
