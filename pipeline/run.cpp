@@ -7,7 +7,7 @@
 
 #include "io/error.hpp"
 #include "io/exr_sequence_source.hpp"
-#include "io/gaze_csv.hpp"
+#include "io/gaze_import.hpp"
 #include "io/library_logging.hpp"
 #include "io/sink_factory.hpp"
 #include "pipeline/eye_simulator.hpp"
@@ -26,15 +26,37 @@ std::string RunSummary::one_line() const {
   return o.str();
 }
 
+namespace {
+
+io::GazeImportOptions gaze_import_options(const Settings& s, const io::SourceInfo& info) {
+  io::GazeImportOptions o;
+  const std::string& f = s.gaze_format;
+  o.format = f == "native"       ? io::GazeFormat::kNative
+             : f == "pupil-core" ? io::GazeFormat::kPupilCore
+             : f == "neon"       ? io::GazeFormat::kNeon
+             : f == "tobii"      ? io::GazeFormat::kTobii
+             : f == "eyelink"    ? io::GazeFormat::kEyeLink
+                                 : io::GazeFormat::kAuto;
+  o.units = s.gaze_units == "norm" ? io::GazeUnits::kNormalised : io::GazeUnits::kPixels;
+  o.frame_width = info.width;
+  o.frame_height = info.height;
+  o.source_width = s.gaze_source_width;
+  o.source_height = s.gaze_source_height;
+  o.min_confidence = s.gaze_confidence;
+  o.offset_s = s.gaze_offset_s;
+  o.sync_clock = s.gaze_sync_s;
+  return o;
+}
+
+}  // namespace
+
 RunSummary run(const Settings& s) {
   cv::setNumThreads(s.threads > 0 ? s.threads : -1);
   io::set_library_verbosity(s.verbose);
   io::ExrSequenceSource source(s.input, s.exr);
   const io::SourceInfo& info = source.info();
   std::vector<io::GazeSample> samples;
-  if (!s.gaze.empty())
-    samples = io::read_gaze_csv(s.gaze, s.gaze_units == "norm" ? io::GazeUnits::kNormalised : io::GazeUnits::kPixels,
-                                info.width, info.height);
+  if (!s.gaze.empty()) samples = io::read_gaze(s.gaze, gaze_import_options(s, info));
   io::SinkOptions sink_options = s.sink;
   sink_options.video.frames_per_second = info.frames_per_second;
   std::unique_ptr<io::FrameSink> sink = io::make_sink(s.output, sink_options);

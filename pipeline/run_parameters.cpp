@@ -17,6 +17,17 @@ ParamSet run_parameters(Settings& s) {
   set.add(number("max-pixels", "pixels", "refuse larger frames, before allocating", in, &s.exr.max_pixels, 1, 4e9));
   set.add(choice("gaze-units", "gaze positions in frame pixels (px) or 0..1 of the frame (norm)", in, &s.gaze_units,
                  {"px", "norm"}));
+  set.add(choice("gaze-format", "gaze log format; auto detects it from the header", in, &s.gaze_format,
+                 {"auto", "native", "pupil-core", "neon", "tobii", "eyelink"}));
+  set.add(number("gaze-offset", "s", "added to every gaze time (after sync)", in, &s.gaze_offset_s, -1e6, 1e6));
+  set.add(number("gaze-sync", "s", "export clock at the first frame (exports only; default: the first sample)", in,
+                 &s.gaze_sync_s, -1e12, 1e12));
+  set.add(number("gaze-confidence", "", "Pupil Core samples below this confidence count as lost", in,
+                 &s.gaze_confidence, 0, 1));
+  set.add(number("gaze-source-width", "px", "width of the export's scene camera or screen; 0: the format's own", in,
+                 &s.gaze_source_width, 0, 100000));
+  set.add(number("gaze-source-height", "px", "height of the export's scene camera or screen; 0: the format's own", in,
+                 &s.gaze_source_height, 0, 100000));
   // Viewing condition.
   set.add(number("fov-deg", "deg", "horizontal field of view of the frame; 0 derives it from the display", view,
                  &s.geometry.fov_deg, 0, 179));

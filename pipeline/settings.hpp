@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "glare/viewer.hpp"
@@ -23,6 +24,11 @@ struct Settings {
   // Files.
   std::string input, gaze, output, config;
   std::string gaze_units = "px";
+  std::string gaze_format = "auto";  // auto, native, pupil-core, neon, tobii, eyelink
+  double gaze_offset_s = 0.0;
+  std::optional<double> gaze_sync_s;
+  double gaze_confidence = 0.6;
+  int gaze_source_width = 0, gaze_source_height = 0;
 
   io::ExrSequenceOptions exr;
   io::SinkOptions sink;

@@ -1,0 +1,69 @@
+// SR Research EyeLink ASC files (edf2asc): sample lines "time x y pupil"
+// (binocular: "time xl yl pl xr yr pr"), "." for missing values, SBLINK /
+// EBLINK events, screen size from the DISPLAY_COORDS message; times in ms.
+#include <cctype>
+#include <sstream>
+
+#include "io/delimited_table.hpp"
+#include "io/error.hpp"
+#include "io/gaze_import.hpp"
+
+namespace eyestream::io {
+
+std::vector<GazeSample> parse_eyelink(const std::string& text, const std::string& name, const GazeImportOptions& o) {
+  std::istringstream in(text);
+  std::string line;
+  int line_no = 0;
+  bool blinking = false;
+  double screen_w = o.source_width, screen_h = o.source_height;
+  std::vector<GazeSample> raw;  // positions in screen pixels until the end
+  while (std::getline(in, line)) {
+    ++line_no;
+    std::istringstream words(line);
+    std::vector<std::string> w;
+    for (std::string word; words >> word;) w.push_back(word);
+    if (w.empty()) continue;
+    const std::string where = name + ":" + std::to_string(line_no);
+    if (w[0] == "MSG") {
+      for (size_t i = 0; i + 4 < w.size(); ++i)
+        if (w[i] == "DISPLAY_COORDS" && o.source_width <= 0) {
+          double l, t, r, b;
+          if (parse_number(w[i + 1], l) && parse_number(w[i + 2], t) && parse_number(w[i + 3], r) &&
+              parse_number(w[i + 4], b))
+            screen_w = r - l + 1, screen_h = b - t + 1;
+        }
+      continue;
+    }
+    if (w[0] == "SBLINK" && w.size() >= 3) {
+      double t;
+      if (!parse_number(w[2], t)) throw InputError(where + ": SBLINK time is not a number");
+      blinking = true;
+      raw.push_back({t * 1e-3, 0, 0, EyeState::kClosed});
+      continue;
+    }
+    if (w[0] == "EBLINK") {
+      blinking = false;
+      continue;
+    }
+    if (!std::isdigit(static_cast<unsigned char>(w[0][0]))) continue;  // other events and headers
+    GazeSample s;
+    double t, x, y;
+    if (!parse_number(w[0], t)) throw InputError(where + ": sample time '" + w[0] + "' is not a number");
+    s.t_s = t * 1e-3;
+    // Left eye first, the right when the left is missing (binocular lines).
+    const bool left = w.size() >= 3 && parse_number(w[1], x) && parse_number(w[2], y);
+    const bool right = !left && w.size() >= 6 && parse_number(w[4], x) && parse_number(w[5], y);
+    if (blinking)
+      s.state = EyeState::kClosed;
+    else if (!left && !right)
+      s.state = EyeState::kLost;
+    else
+      s.x = x, s.y = y;
+    raw.push_back(s);
+  }
+  const double sx = screen_w > 0 ? o.frame_width / screen_w : 1.0, sy = screen_h > 0 ? o.frame_height / screen_h : 1.0;
+  for (GazeSample& s : raw) s.x *= sx, s.y *= sy;
+  return raw;
+}
+
+}  // namespace eyestream::io

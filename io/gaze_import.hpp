@@ -1,0 +1,48 @@
+// Gaze logs from eye-tracker exports, mapped to the native model (time from
+// the first frame, position in input-frame pixels, open/closed/lost).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "io/gaze_csv.hpp"
+#include "io/gaze_sample.hpp"
+
+namespace eyestream::io {
+
+enum class GazeFormat { kAuto, kNative, kPupilCore, kNeon, kTobii, kEyeLink };
+
+struct GazeImportOptions {
+  GazeFormat format = GazeFormat::kAuto;
+  GazeUnits units = GazeUnits::kPixels;  // native format only
+  int frame_width = 0, frame_height = 0;
+  // The export's own coordinate frame (scene camera or screen) in pixels,
+  // scaled to the input frame; 0: the format's default or the file's own
+  // (Neon 1600x1200; EyeLink from DISPLAY_COORDS; Tobii and native: the frame).
+  int source_width = 0, source_height = 0;
+  double min_confidence = 0.6;       // Pupil Core: lower confidence is "lost"
+  double offset_s = 0.0;             // added to every time after alignment
+  std::optional<double> sync_clock;  // export clock (its own unit, seconds) at frame 0; default the first sample
+};
+
+// Reads `path` in the given or detected format. Exports whose clock is
+// absolute (all but native) are aligned so `sync_clock` (default: the first
+// sample) is time 0; then offset_s is added. Export samples are ordered by
+// time; of samples at the same time the last is kept. Malformed lines are
+// an InputError naming the file and line.
+std::vector<GazeSample> read_gaze(const std::string& path, const GazeImportOptions& options);
+
+// The same for text in memory; `name` stands for the file in messages.
+std::vector<GazeSample> parse_gaze(const std::string& text, const std::string& name, const GazeImportOptions& options);
+
+// The format the text's header looks like (kNative when unsure).
+GazeFormat detect_gaze_format(const std::string& text);
+
+// Per-format parsers: samples with the export's own clock in seconds.
+std::vector<GazeSample> parse_pupil_core(const std::string& text, const std::string& name, const GazeImportOptions& o);
+std::vector<GazeSample> parse_neon(const std::string& text, const std::string& name, const GazeImportOptions& o);
+std::vector<GazeSample> parse_tobii(const std::string& text, const std::string& name, const GazeImportOptions& o);
+std::vector<GazeSample> parse_eyelink(const std::string& text, const std::string& name, const GazeImportOptions& o);
+
+}  // namespace eyestream::io

@@ -1,0 +1,128 @@
+// Eye-tracker exports, each from a small fixture written from the
+// format's documented header.
+#include "io/gaze_import.hpp"
+
+#include <gtest/gtest.h>
+
+#include "io/error.hpp"
+
+namespace eyestream::io {
+namespace {
+
+GazeImportOptions frame_1000x500() {
+  GazeImportOptions o;
+  o.frame_width = 1000;
+  o.frame_height = 500;
+  return o;
+}
+
+TEST(GazeImport, PupilCoreNormalisedBottomLeftWithConfidence) {
+  const std::string text =
+      "gaze_timestamp,world_index,confidence,norm_pos_x,norm_pos_y,base_data\n"
+      "3401.250,0,0.95,0.5,0.25,x\n"
+      "3401.258,0,0.30,0.6,0.6,x\n"  // low confidence: lost
+      "3401.266,1,0.90,0.1,0.9,x\n";
+  ASSERT_EQ(detect_gaze_format(text), GazeFormat::kPupilCore);
+  const auto s = parse_gaze(text, "gaze_positions.csv", frame_1000x500());
+  ASSERT_EQ(s.size(), 3u);
+  EXPECT_NEAR(s[0].t_s, 0.0, 1e-9) << "the first sample is frame 0";
+  EXPECT_NEAR(s[2].t_s, 0.016, 1e-9);
+  EXPECT_DOUBLE_EQ(s[0].x, 500.0);
+  EXPECT_DOUBLE_EQ(s[0].y, 375.0) << "origin bottom-left";
+  EXPECT_EQ(s[1].state, EyeState::kLost);
+  EXPECT_DOUBLE_EQ(s[2].y, 50.0);
+}
+
+TEST(GazeImport, NeonPixelsBlinksAndWorn) {
+  const std::string text =
+      "section id,recording id,timestamp [ns],gaze x [px],gaze y [px],worn,fixation id,blink id,azimuth [deg],"
+      "elevation [deg]\n"
+      "a,b,1700000000000000000,800,600,1,1,,0,0\n"
+      "a,b,1700000000005000000,800,600,1,,7,0,0\n"
+      "a,b,1700000000010000000,400,300,0,,,0,0\n"
+      "a,b,1700000000015000000,1600,1200,1,2,,0,0\n";
+  ASSERT_EQ(detect_gaze_format(text), GazeFormat::kNeon);
+  const auto s = parse_gaze(text, "gaze.csv", frame_1000x500());
+  ASSERT_EQ(s.size(), 4u);
+  EXPECT_NEAR(s[1].t_s, 0.005, 1e-6);
+  EXPECT_DOUBLE_EQ(s[0].x, 500.0) << "1600x1200 scene camera scaled to the frame";
+  EXPECT_DOUBLE_EQ(s[0].y, 250.0);
+  EXPECT_EQ(s[1].state, EyeState::kClosed) << "blink id";
+  EXPECT_EQ(s[2].state, EyeState::kLost) << "not worn";
+  EXPECT_DOUBLE_EQ(s[3].x, 1000.0);
+}
+
+TEST(GazeImport, TobiiMicrosecondsDecimalCommasAndValidity) {
+  const std::string text =
+      "Recording timestamp [\xce\xbcs]\tGaze point X\tGaze point Y\tValidity left\tValidity right\n"
+      "2000000\t960,5\t540\tValid\tValid\n"
+      "2008333\t\t\tInvalid\tInvalid\n"
+      "2016666\t100\t50\tInvalid\tValid\n";
+  ASSERT_EQ(detect_gaze_format(text), GazeFormat::kTobii);
+  GazeImportOptions o = frame_1000x500();
+  o.source_width = 1920;
+  o.source_height = 1080;
+  const auto s = parse_gaze(text, "export.tsv", o);
+  ASSERT_EQ(s.size(), 3u);
+  EXPECT_NEAR(s[1].t_s, 0.008333, 1e-9);
+  EXPECT_NEAR(s[0].x, 960.5 * 1000 / 1920, 1e-9) << "decimal comma";
+  EXPECT_EQ(s[1].state, EyeState::kLost);
+  EXPECT_EQ(s[2].state, EyeState::kOpen) << "one valid eye is enough";
+}
+
+TEST(GazeImport, TobiiMillisecondsByDefault) {
+  const std::string text = "Recording timestamp\tGaze point X\tGaze point Y\n100\t1\t2\n150\t3\t4\n";
+  const auto s = parse_gaze(text, "export.tsv", frame_1000x500());
+  EXPECT_NEAR(s[1].t_s, 0.05, 1e-12);
+}
+
+TEST(GazeImport, EyeLinkSamplesMissingValuesAndBlinks) {
+  const std::string text =
+      "** CONVERTED FROM test.edf\n"
+      "MSG\t1000 DISPLAY_COORDS 0 0 1999 999\n"
+      "START\t1000 \tLEFT\tSAMPLES\tEVENTS\n"
+      "1000\t1000.0\t500.0\t1200.0\t...\n"
+      "1002\t   .\t   .\t    0.0\t...\n"
+      "SBLINK L 1004\n"
+      "1004\t   .\t   .\t    0.0\t...\n"
+      "EBLINK L 1004 1010 7\n"
+      "1012\t200.0\t100.0\t1100.0\t...\n";
+  ASSERT_EQ(detect_gaze_format(text), GazeFormat::kEyeLink);
+  const auto s = parse_gaze(text, "run.asc", frame_1000x500());
+  ASSERT_EQ(s.size(), 4u) << "the blink start and its sample share a time: one is kept";
+  EXPECT_DOUBLE_EQ(s[0].x, 500.0) << "2000x1000 screen scaled to the frame";
+  EXPECT_EQ(s[1].state, EyeState::kLost);
+  EXPECT_EQ(s[2].state, EyeState::kClosed);
+  EXPECT_NEAR(s[3].t_s, 0.012, 1e-12);
+  EXPECT_DOUBLE_EQ(s[3].y, 50.0);
+}
+
+TEST(GazeImport, SyncAndOffsetAlignTheClock) {
+  const std::string text = "gaze_timestamp,confidence,norm_pos_x,norm_pos_y\n10.0,1,0.5,0.5\n10.5,1,0.5,0.5\n";
+  GazeImportOptions o = frame_1000x500();
+  o.sync_clock = 9.0;
+  o.offset_s = 0.25;
+  const auto s = parse_gaze(text, "g.csv", o);
+  EXPECT_NEAR(s[0].t_s, 1.25, 1e-12);
+  EXPECT_NEAR(s[1].t_s, 1.75, 1e-12);
+}
+
+TEST(GazeImport, BadLinesNameFileAndLine) {
+  const std::string text = "gaze_timestamp,confidence,norm_pos_x,norm_pos_y\n10.0,1,0.5,0.5\nten,1,0.5,0.5\n";
+  try {
+    parse_gaze(text, "g.csv", frame_1000x500());
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("g.csv:3"), std::string::npos) << e.what();
+  }
+}
+
+TEST(GazeImport, NativeLogsStillParseAndTakeTheOffset) {
+  GazeImportOptions o = frame_1000x500();
+  o.offset_s = 1.0;
+  const auto s = parse_gaze("t,x,y\n0,1,2\n", "g.csv", o);
+  EXPECT_DOUBLE_EQ(s[0].t_s, 1.0);
+}
+
+}  // namespace
+}  // namespace eyestream::io
