@@ -18,4 +18,7 @@ struct SinkOptions {
 // extension is a UsageError naming the path.
 std::unique_ptr<FrameSink> make_sink(const std::string& path, const SinkOptions& options);
 
+// What the sink make_sink would return needs, without creating anything.
+SinkNeeds sink_needs(const std::string& path, const SinkOptions& options);
+
 }  // namespace eyestream::io

@@ -9,6 +9,7 @@
 #include "pipeline/exit_codes.hpp"
 #include "pipeline/parameter.hpp"
 #include "pipeline/psf_command.hpp"
+#include "pipeline/quality_presets.hpp"
 #include "pipeline/run.hpp"
 #include "pipeline/settings.hpp"
 #include "samples/scene.hpp"
@@ -92,7 +93,17 @@ int main(int argc, char** argv) {
 
   try {
     if (*run_cmd) {
+      // The preset first, then the config file and the command line again:
+      // an explicit value wins over the preset.
       params.apply(settings.config);
+      apply_quality_preset(settings.quality, settings);
+      params.apply(settings.config);
+      if (settings.print_plan) {
+        for (const Param& p : params.params())
+          std::printf("%s = %s\n", p.name.c_str(), ParamSet::value_text(p).c_str());
+        std::printf("%s", describe_run(settings).c_str());
+        return kExitOk;
+      }
       const RunSummary summary = run(settings);
       std::fprintf(stderr, "%s\n", summary.one_line().c_str());
     } else if (*curves_cmd) {

@@ -63,8 +63,9 @@ std::string Plan::describe() const {
     << (retina.afterimages.local_adaptation ? "local adaptation" : "no local adaptation") << "\n"
     << "mesopic = " << (mesopic.enabled ? "on" : "off") << " (rho from " << mesopic.colour.bottom_log << " to "
     << mesopic.colour.top_log << " log10 cd/m^2; acuity loss " << (mesopic.acuity ? "on" : "off") << ")\n"
-    << "stages = adaptation, retina, tone curve, mesopic, display encoding" << (encoding.dither ? " (dithered)" : "")
-    << "\n";
+    << "stages = " << (glare.enabled ? "glare (frames with light above the display peak), " : "")
+    << "adaptation, retina, tone curve, mesopic (below 7.5 cd/m^2 of adaptation), afterimages, display encoding"
+    << (encoding.dither ? " (dithered)" : "") << "\n";
   return o.str();
 }
 

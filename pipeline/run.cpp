@@ -50,6 +50,12 @@ io::GazeImportOptions gaze_import_options(const Settings& s, const io::SourceInf
 
 }  // namespace
 
+std::string describe_run(const Settings& s) {
+  io::ExrSequenceSource source(s.input, s.exr);
+  const Plan plan = compile_plan(s, source.info(), io::sink_needs(s.output, s.sink));
+  return s.input + ": " + source.info().description + "\n" + plan.describe();
+}
+
 RunSummary run(const Settings& s) {
   cv::setNumThreads(s.threads > 0 ? s.threads : -1);
   io::set_library_verbosity(s.verbose);

@@ -24,4 +24,7 @@ struct RunSummary {
 // frame's lasts 1/fps. Errors are UsageError, InputError or OutputError.
 RunSummary run(const Settings& settings);
 
+// The plan `run` would follow, as text, reading only the first frame.
+std::string describe_run(const Settings& settings);
+
 }  // namespace eyestream::pipeline

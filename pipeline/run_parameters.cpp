@@ -125,6 +125,9 @@ ParamSet run_parameters(Settings& s) {
                  &s.sink.video.encoder_threads, 1, 64));
   set.add(choice("png-bits", "PNG bit depth", out, &s.sink.png_bits, {"8", "16"}));
   // Program.
+  set.add(choice("quality", "preset: reference (exact, slow), balanced, fast; single options override it", prog,
+                 &s.quality, {"reference", "balanced", "fast"}));
+  set.add(flag("print-plan", "print the resolved settings and stages, then stop without writing", prog, &s.print_plan));
   set.add(number("threads", "", "worker threads; 0 uses all cores (output never depends on it)", prog, &s.threads, 0,
                  1024));
   set.add(number("seed", "", "seed of every random stream", prog, &s.seed, 0, 9.007199254740992e15));

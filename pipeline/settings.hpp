@@ -70,6 +70,8 @@ struct Settings {
   retina::EncodingParams encoding;
 
   // Program.
+  std::string quality = "balanced";  // a named bundle of the knobs above (quality_presets.hpp)
+  bool print_plan = false;
   int threads = 0;  // 0: all cores
   std::int64_t seed = 0;
   bool progress = true;

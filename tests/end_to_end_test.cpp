@@ -135,6 +135,21 @@ TEST_F(EndToEnd, CurvesCommandDrawsTheToneCurveFamily) {
   EXPECT_EQ(test::run_eyestream("curves -o " + (out_ / "d.png") + " --plateau-high 2").exit_code, 2);
 }
 
+TEST_F(EndToEnd, QualityPresetsResolveAndExplicitOptionsWin) {
+  const std::string out = out_ / "plan/v.mp4";
+  auto r = test::run_eyestream("run " + inputs() + " -o " + out + " --quality fast --print-plan");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("psf-model = gaussian"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("state-resolution = 0.25"), std::string::npos);
+  EXPECT_NE(r.output.find("stages = "), std::string::npos);
+  r = test::run_eyestream("run " + inputs() + " -o " + out +
+                          " --quality reference --state-resolution 0.5 --print-plan");
+  EXPECT_NE(r.output.find("precision = double"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("state-resolution = 0.5"), std::string::npos) << "the explicit option wins";
+  EXPECT_FALSE(fs::exists(out_ / "plan")) << "printing the plan writes nothing";
+  EXPECT_EQ(test::run_eyestream("run " + inputs() + " -o " + out + " --quality turbo").exit_code, 2);
+}
+
 TEST_F(EndToEnd, HelpListsEveryOptionWithUnitDefaultAndRange) {
   const auto r = test::run_eyestream("run --help");
   EXPECT_EQ(r.exit_code, 0);
