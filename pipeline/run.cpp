@@ -79,7 +79,12 @@ RunSummary run(const Settings& s) {
     std::optional<io::SceneFrame> next = source.next();
     const double t1 = next ? next->time_s : current->time_s + 1.0 / info.frames_per_second;
     FrameReport report;
-    sink->write(eye.process(*current, timeline.segments(current->time_s, t1), &report));
+    const io::DisplayFrame shown = eye.process(*current, timeline.segments(current->time_s, t1), &report);
+    if (report.nonfinite_pixels > 0 && s.bad_pixels == "fail")
+      throw InputError(current->source + ": frame " + std::to_string(current->index) + " has " +
+                       std::to_string(report.nonfinite_pixels) +
+                       " NaN or infinite pixels (--bad-pixels clamp to go on)");
+    sink->write(shown);
     if (!s.state_exr.empty() && current->index == s.state_frame) eye.retina().write_state(s.state_exr);
     summary.nonfinite_pixels += report.nonfinite_pixels;
     if (s.verbose)

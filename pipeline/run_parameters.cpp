@@ -17,6 +17,8 @@ ParamSet run_parameters(Settings& s) {
   set.add(number("max-pixels", "pixels", "refuse larger frames, before allocating", in, &s.exr.max_pixels, 1, 4e9));
   set.add(choice("gaze-units", "gaze positions in frame pixels (px) or 0..1 of the frame (norm)", in, &s.gaze_units,
                  {"px", "norm"}));
+  set.add(choice("bad-pixels", "NaN or infinite pixels: clamp (shown black, counted) or fail", in, &s.bad_pixels,
+                 {"clamp", "fail"}));
   set.add(choice("gaze-format", "gaze log format; auto detects it from the header", in, &s.gaze_format,
                  {"auto", "native", "pupil-core", "neon", "tobii", "eyelink"}));
   set.add(number("gaze-offset", "s", "added to every gaze time (after sync)", in, &s.gaze_offset_s, -1e6, 1e6));

@@ -24,6 +24,7 @@ struct Settings {
   // Files.
   std::string input, gaze, output, config;
   std::string gaze_units = "px";
+  std::string bad_pixels = "clamp";  // NaN or infinite pixels: clamp (show black, count) or fail
   std::string gaze_format = "auto";  // auto, native, pupil-core, neon, tobii, eyelink
   double gaze_offset_s = 0.0;
   std::optional<double> gaze_sync_s;
