@@ -37,11 +37,6 @@ cv::Vec3d halo_at(const std::vector<cv::Vec3d>& table, double t) {
   return table[i] * (1.0 - f) + table[i + 1] * f;
 }
 
-void normalise(cv::Mat& k) {
-  const double sum = cv::sum(k)[0];
-  if (sum > 0) k /= sum;
-}
-
 }  // namespace
 
 ComponentKernels build_component_kernels(int w, int h, double ppd) {
@@ -54,6 +49,7 @@ ComponentKernels build_component_kernels(int w, int h, double ppd) {
   for (cv::Mat& m : k.halo) m = cv::Mat::zeros(size, CV_64F);
   const std::vector<cv::Vec3d> halo = halo_table();
   const int cx = w - 1, cy = h - 1;
+  const double pixel_sr = std::pow(M_PI / 180.0 / ppd, 2.0);
   cv::parallel_for_(cv::Range(0, size.height), [&](const cv::Range& rows) {
     for (int y = rows.start; y < rows.end; ++y)
       for (int x = 0; x < size.width; ++x) {
@@ -69,17 +65,14 @@ ComponentKernels build_component_kernels(int w, int h, double ppd) {
             f2 += vos_f2(t);
             f3 += halo_at(halo, t);
           }
-        const double area = 1.0 / (n * n);  // per-steradian densities times a constant pixel solid angle
-        k.core.at<double>(y, x) = f0 * area;
-        k.inner.at<double>(y, x) = f1 * area;
-        k.outer.at<double>(y, x) = f2 * area;
-        for (int c = 0; c < 3; ++c) k.halo[c].at<double>(y, x) = f3[c] * area;
+        // Mean density per steradian over the footprint, times the pixel's solid angle.
+        const double weight = pixel_sr / (n * n);
+        k.core.at<double>(y, x) = f0 * weight;
+        k.inner.at<double>(y, x) = f1 * weight;
+        k.outer.at<double>(y, x) = f2 * weight;
+        for (int c = 0; c < 3; ++c) k.halo[c].at<double>(y, x) = f3[c] * weight;
       }
   });
-  normalise(k.core);
-  normalise(k.inner);
-  normalise(k.outer);
-  for (cv::Mat& m : k.halo) normalise(m);
   return k;
 }
 

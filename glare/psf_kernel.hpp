@@ -1,8 +1,15 @@
 // The eye's PSF on the pixel grid: one kernel per Vos component, each
-// integrated over every pixel's footprint and normalised to unit sum
-// (seed 000 sec. 3.2, seed 003; MODEL.md 1.3). The frame's kernel is the
-// weighted sum of the components (psf_weights.hpp), so any weights (age,
-// adaptation regime, pupil) combine without rebuilding anything.
+// integrated over every pixel's footprint (seed 000 sec. 3.2, seed 003;
+// MODEL.md 1.3). The frame's kernel is the weighted sum of the components
+// (psf_weights.hpp), so any weights (age, adaptation regime, pupil) combine
+// without rebuilding anything.
+//
+// Departure from MODEL.md 1.3: the kernels are not renormalised to unit sum
+// after truncation to the frame's reach. Each holds the PSF's own energy
+// within that reach (the components have unit volume over the hemisphere,
+// see vos_psf.hpp), and light scattered farther leaves the frame. Renor-
+// malising would push the far tail of f2 back onto nearby offsets and
+// inflate every veil: by about 25 % on a 16:9 frame (tests/report_test.cpp).
 #pragma once
 
 #include <opencv2/core.hpp>
@@ -21,7 +28,8 @@ struct ComponentKernels {
 };
 
 // Builds the component kernels for a frame_width x frame_height frame.
-// Each pixel's value is the PSF integrated over its footprint (angles from
+// Each pixel's value is the PSF (per steradian) integrated over its
+// footprint (solid angle (pi / 180 / ppd)^2; angles from
 // pixel centres to the PSF centre at pixels_per_degree), sampled 16x16
 // within 3 px of the centre, 4x4 within 12 px and on the halo ring (2-4.5
 // deg), at the pixel centre elsewhere. The halo of channel c mixes f3 over
@@ -30,7 +38,7 @@ struct ComponentKernels {
 ComponentKernels build_component_kernels(int frame_width, int frame_height, double pixels_per_degree);
 
 // The combined kernel of channel c for given weights (sum of weighted
-// components), CV_64F; it sums to 1.
+// components), CV_64F; it sums to the PSF's energy within the frame's reach.
 cv::Mat combined_kernel(const ComponentKernels& k, const PsfWeights& w, int channel);
 
 // Share of the continuous PSF's energy beyond t_deg (seed 000 states

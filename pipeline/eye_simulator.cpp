@@ -1,9 +1,14 @@
 #include "pipeline/eye_simulator.hpp"
 
+#include <cmath>
+
+#include "glare/veiling_luminance.hpp"
+#include "glare/viewer.hpp"
 #include "pipeline/pixel_checks.hpp"
 #include "retina/adaptation.hpp"
 #include "retina/display_encoding.hpp"
 #include "retina/log_luminance_field.hpp"
+#include "retina/luminance.hpp"
 #include "retina/tone_curve.hpp"
 #include "retina/tone_map.hpp"
 
@@ -63,8 +68,24 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
     report->eye_closed = last.eye_closed;
     report->nonfinite_pixels = nonfinite;
     report->glare_ran = glare_ran;
+    if (plan_.report) fill_glare_report(scene, last, *report);
   }
   return out;
+}
+
+void EyeSimulator::fill_glare_report(const cv::Mat& scene, const GazeSegment& gaze, FrameReport& r) const {
+  cv::Mat luminance(scene.size(), CV_32F);
+  scene.forEach<cv::Vec3f>(
+      [&](const cv::Vec3f& p, const int* pos) { luminance.at<float>(pos[0], pos[1]) = retina::photopic_luminance(p); });
+  double peak;
+  cv::minMaxLoc(luminance, nullptr, &peak);
+  r.peak_cd_m2 = peak;
+  r.pupil_mm = glare::pupil_diameter_mm(*adaptation_);
+  if (!glare_ || gaze.eye_closed) return;
+  const std::optional<double> veil = glare_->veil_at(luminance, *adaptation_, gaze.x, gaze.y, plan_.veil_exclusion_deg);
+  if (!veil) return;
+  r.veil_cd_m2 = *veil;
+  r.ti_percent = glare::threshold_increment(*veil, std::pow(10.0, *adaptation_));
 }
 
 double EyeSimulator::first_target(const cv::Mat& scene, const GazeSegment& first) const {

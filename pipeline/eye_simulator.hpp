@@ -23,6 +23,11 @@ struct FrameReport {
   bool eye_closed = false;
   std::int64_t nonfinite_pixels = 0;
   bool glare_ran = false;  // false when nothing exceeded the display peak (or glare is off)
+  // Filled when the plan asks for a report:
+  double pupil_mm = 0.0;     // Moon-Spencer pupil at the adaptation level
+  double peak_cd_m2 = 0.0;   // brightest scene pixel (photopic luminance)
+  double veil_cd_m2 = -1.0;  // veiling luminance at the gaze; -1 without a Vos PSF or with eyes closed
+  double ti_percent = -1.0;  // threshold increment at the gaze; -1 when the veil is unknown
 };
 
 class EyeSimulator {
@@ -43,6 +48,7 @@ class EyeSimulator {
   const GlareStage* glare() const { return glare_.get(); }
 
  private:
+  void fill_glare_report(const cv::Mat& scene, const GazeSegment& gaze, FrameReport& r) const;
   double first_target(const cv::Mat& scene, const GazeSegment& first) const;
 
   Plan plan_;

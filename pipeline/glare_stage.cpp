@@ -3,6 +3,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "glare/psf_weights.hpp"
+#include "glare/veiling_luminance.hpp"
 #include "glare/viewer.hpp"
 #include "retina/luminance.hpp"
 
@@ -12,6 +13,14 @@ GlareStage::GlareStage(const Plan& plan) : plan_(plan) {
   if (plan.glare.gaussian) return;  // no kernels: a separable blur does the work
   kernels_ = glare::build_component_kernels(plan.width, plan.height, plan.pixels_per_degree);
   convolver_ = std::make_unique<glare::FftConvolver>(kernels_);
+}
+
+std::optional<double> GlareStage::veil_at(const cv::Mat& luminance, double adaptation_log, double x, double y,
+                                          double exclusion_deg) const {
+  if (plan_.glare.gaussian) return std::nullopt;
+  const glare::PsfWeights w =
+      glare::psf_weights(plan_.glare.viewer, adaptation_log, glare::pupil_diameter_mm(adaptation_log));
+  return glare::veiling_luminance(luminance, kernels_, w, x, y, exclusion_deg * plan_.pixels_per_degree);
 }
 
 cv::Mat GlareStage::spread(const cv::Mat& rgb, double adaptation_log) const {

@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <opencv2/core.hpp>
+#include <optional>
 
 #include "glare/fft_convolver.hpp"
 #include "glare/psf_kernel.hpp"
@@ -22,6 +23,12 @@ class GlareStage {
   // spreads everything. When nothing exceeds the display peak in excess
   // mode, returns `rgb` itself and sets *ran to false: no glare work.
   cv::Mat apply(const cv::Mat& rgb, double adaptation_log, bool* ran = nullptr) const;
+
+  // The veiling luminance (cd/m^2) at (x, y) from the light more than
+  // exclusion_deg away (glare/veiling_luminance.hpp), for the viewer at
+  // this adaptation; nothing with the Gaussian model (it is no eye PSF).
+  std::optional<double> veil_at(const cv::Mat& luminance, double adaptation_log, double x, double y,
+                                double exclusion_deg) const;
 
   // The Vos component kernels (empty with the Gaussian model).
   const glare::ComponentKernels& kernels() const { return kernels_; }

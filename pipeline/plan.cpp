@@ -44,6 +44,8 @@ Plan compile_plan(const Settings& s, const io::SourceInfo& source, io::SinkNeeds
   p.mesopic.acuity = s.acuity_loss;
   p.mesopic.acuity_params = s.acuity;
   p.needs = needs;
+  p.report = !s.report.empty();
+  p.veil_exclusion_deg = s.veil_exclusion_deg;
   return p;
 }
 

@@ -55,6 +55,8 @@ struct Plan {
   RetinaPlan retina;
   MesopicPlan mesopic;
   io::SinkNeeds needs = io::SinkNeeds::kCode8;
+  bool report = false;  // fill the disability-glare fields of FrameReport
+  double veil_exclusion_deg = 1.0;
 
   // One "name = value" line per resolved setting.
   std::string describe() const;

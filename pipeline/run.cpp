@@ -14,6 +14,7 @@
 #include "pipeline/gaze_timeline.hpp"
 #include "pipeline/plan.hpp"
 #include "pipeline/progress.hpp"
+#include "pipeline/report_writer.hpp"
 
 namespace eyestream::pipeline {
 
@@ -74,6 +75,8 @@ RunSummary run(const Settings& s) {
   RunSummary summary;
   summary.output = s.output;
   Progress progress(info.frame_count, s.progress);
+  std::optional<ReportWriter> report_writer;
+  if (!s.report.empty()) report_writer.emplace(s.report, s.viewer.age_years);
   std::optional<io::SceneFrame> current = source.next();
   while (current) {
     std::optional<io::SceneFrame> next = source.next();
@@ -85,6 +88,7 @@ RunSummary run(const Settings& s) {
                        std::to_string(report.nonfinite_pixels) +
                        " NaN or infinite pixels (--bad-pixels clamp to go on)");
     sink->write(shown);
+    if (report_writer) report_writer->add(current->index, current->time_s, report);
     if (!s.state_exr.empty() && current->index == s.state_frame) eye.retina().write_state(s.state_exr);
     summary.nonfinite_pixels += report.nonfinite_pixels;
     if (s.verbose)
@@ -97,6 +101,7 @@ RunSummary run(const Settings& s) {
     current = std::move(next);
   }
   sink->finish();
+  if (report_writer) report_writer->finish();
   progress.finish();
   summary.wall_s = progress.elapsed_s();
   summary.final_adaptation_log = eye.adaptation_log();

@@ -126,6 +126,12 @@ ParamSet run_parameters(Settings& s) {
   set.add(number("encoder-threads", "", "H.264 encoder threads (fixed: output bytes depend on it)", out,
                  &s.sink.video.encoder_threads, 1, 64));
   set.add(choice("png-bits", "PNG bit depth", out, &s.sink.png_bits, {"8", "16"}));
+  // Report.
+  const std::string rep = "Report";
+  set.add(text("report", "per-frame CSV of adaptation, pupil, veiling luminance and TI; JSON summary beside it", rep,
+               &s.report));
+  set.add(number("veil-exclusion", "deg", "light this close to the gaze does not count as veil", rep,
+                 &s.veil_exclusion_deg, 0, 30));
   // Program.
   set.add(choice("quality", "preset: reference (exact, slow), balanced, fast; single options override it", prog,
                  &s.quality, {"reference", "balanced", "fast"}));

@@ -70,6 +70,10 @@ struct Settings {
   // Display.
   retina::EncodingParams encoding;
 
+  // Report.
+  std::string report;               // per-frame CSV; a JSON summary goes beside it
+  double veil_exclusion_deg = 1.0;  // light within this angle of the gaze is not counted as veil
+
   // Program.
   std::string quality = "balanced";  // a named bundle of the knobs above (quality_presets.hpp)
   bool print_plan = false;

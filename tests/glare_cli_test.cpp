@@ -18,7 +18,9 @@ TEST(GlareCli, PsfCommandWritesTheKernelAPictureAndItsEnergies) {
   EXPECT_NE(r.output.find("beyond"), std::string::npos);
   const io::ExrImage k = io::read_exr(dir / "k.exr", 1 << 20);
   EXPECT_EQ(k.rgb.cols, 2 * 96 - 1);
-  EXPECT_NEAR(cv::sum(k.rgb)[1], 1.0, 1e-4);
+  const double sum = cv::sum(k.rgb)[1];
+  EXPECT_GT(sum, 0.8) << "most of the PSF's energy is within a 96x54 frame's reach";
+  EXPECT_LT(sum, 1.0) << "not all: the far tail leaves the frame";
   EXPECT_TRUE(std::filesystem::exists(dir / "k.png"));
 }
 
