@@ -39,6 +39,16 @@ std::vector<GazeSample> parse_gaze(const std::string& text, const std::string& n
 // The format the text's header looks like (kNative when unsure).
 GazeFormat detect_gaze_format(const std::string& text);
 
+// Sets `s` to the position (x sx, y sy) when `seen`, else marks it lost.
+inline void place(GazeSample& s, bool seen, double x, double y, double sx, double sy) {
+  if (!seen) {
+    s.state = EyeState::kLost;
+    return;
+  }
+  s.x = x * sx;
+  s.y = y * sy;
+}
+
 // Per-format parsers: samples with the export's own clock in seconds.
 std::vector<GazeSample> parse_pupil_core(const std::string& text, const std::string& name, const GazeImportOptions& o);
 std::vector<GazeSample> parse_neon(const std::string& text, const std::string& name, const GazeImportOptions& o);

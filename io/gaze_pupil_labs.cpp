@@ -39,12 +39,7 @@ std::vector<GazeSample> parse_pupil_core(const std::string& text, const std::str
       throw InputError(where + ": confidence is not a number");
     const bool position =
         parse_number(field(t.rows[r], cx, where), nx) && parse_number(field(t.rows[r], cy, where), ny);
-    if (confidence < o.min_confidence || !position) {
-      s.state = EyeState::kLost;
-    } else {
-      s.x = nx * o.frame_width;
-      s.y = (1.0 - ny) * o.frame_height;
-    }
+    place(s, confidence >= o.min_confidence && position, nx, 1.0 - ny, o.frame_width, o.frame_height);
     out.push_back(s);
   }
   return out;
@@ -69,14 +64,11 @@ std::vector<GazeSample> parse_neon(const std::string& text, const std::string& n
     const bool blink = cb >= 0 && cb < int(t.rows[r].size()) && !t.rows[r][size_t(cb)].empty();
     const std::string worn = cw >= 0 && cw < int(t.rows[r].size()) ? t.rows[r][size_t(cw)] : "1";
     const bool position = parse_number(field(t.rows[r], cx, where), x) && parse_number(field(t.rows[r], cy, where), y);
-    if (blink) {
+    const bool worn_now = !(worn == "0" || worn == "false" || worn == "False");
+    if (blink)
       s.state = EyeState::kClosed;
-    } else if (worn == "0" || worn == "false" || worn == "False" || !position) {
-      s.state = EyeState::kLost;
-    } else {
-      s.x = x * sx;
-      s.y = y * sy;
-    }
+    else
+      place(s, worn_now && position, x, y, sx, sy);
     out.push_back(s);
   }
   return out;

@@ -35,12 +35,7 @@ std::vector<GazeSample> parse_tobii(const std::string& text, const std::string& 
     s.t_s = clock * to_s;
     const bool position = cx < int(row.size()) && cy < int(row.size()) && parse_number(row[size_t(cx)], x, true) &&
                           parse_number(row[size_t(cy)], y, true);
-    if (!position || (invalid(row, cl) && invalid(row, cr))) {
-      s.state = EyeState::kLost;
-    } else {
-      s.x = x * sx;
-      s.y = y * sy;
-    }
+    place(s, position && !(invalid(row, cl) && invalid(row, cr)), x, y, sx, sy);
     out.push_back(s);
   }
   return out;

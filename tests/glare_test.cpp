@@ -172,13 +172,7 @@ namespace eyestream::pipeline {
 namespace {
 
 TEST(GlareStage, FramesWithNothingAboveTheDisplayPeakSkipTheWork) {
-  Settings s;
-  io::SourceInfo info;
-  info.width = 64;
-  info.height = 36;
-  info.frames_per_second = 30;
-  const Plan plan = compile_plan(s, info, io::SinkNeeds::kLinear);
-  const GlareStage stage(plan);
+  const GlareStage stage(test::plan_for(Settings{}, 64, 36));
   const cv::Mat dim = test::constant_frame(64, 36, {50, 50, 50});
   bool ran = true;
   const cv::Mat out = stage.apply(dim, 1.0, &ran);
@@ -196,12 +190,7 @@ TEST(GlareStage, FramesWithNothingAboveTheDisplayPeakSkipTheWork) {
 TEST(GlareStage, GaussianModelMovesLightWithoutAddingAny) {
   Settings s;
   s.psf_model = "gaussian";
-  io::SourceInfo info;
-  info.width = 96;
-  info.height = 54;
-  info.frames_per_second = 30;
-  const Plan plan = compile_plan(s, info, io::SinkNeeds::kLinear);
-  const GlareStage stage(plan);
+  const GlareStage stage(test::plan_for(s, 96, 54));
   EXPECT_TRUE(stage.kernels().core.empty()) << "no Vos kernels built";
   cv::Mat scene = test::constant_frame(96, 54, {1, 1, 1});
   scene.at<cv::Vec3f>(27, 48) = cv::Vec3f(1e5f, 1e5f, 1e5f);

@@ -15,13 +15,7 @@ namespace {
 
 const cv::Size kFrame(320, 180);
 
-Plan plan_for(Settings s, cv::Size frame = kFrame) {
-  io::SourceInfo info;
-  info.width = frame.width;
-  info.height = frame.height;
-  info.frames_per_second = 30;
-  return compile_plan(s, info, io::SinkNeeds::kLinear);
-}
+Plan plan_for(const Settings& s, cv::Size frame = kFrame) { return test::plan_for(s, frame.width, frame.height); }
 
 Settings colour_only() {
   Settings s;

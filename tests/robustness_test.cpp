@@ -38,14 +38,7 @@ TEST(Robustness, UnwritableOutputFailsWithExitCode4) {
   EXPECT_NE(r.output.find("/dev/null/sub"), std::string::npos) << r.output;
 }
 
-pipeline::Plan small_plan(int w, int h) {
-  pipeline::Settings s;
-  io::SourceInfo info;
-  info.width = w;
-  info.height = h;
-  info.frames_per_second = 30;
-  return pipeline::compile_plan(s, info, io::SinkNeeds::kLinear);
-}
+pipeline::Plan small_plan(int w, int h) { return test::plan_for(pipeline::Settings{}, w, h); }
 
 // A constant scene for 100 000 frames (an hour at 30 fps, at small size):
 // once adaptation and the pupil have settled (the first frame's optics

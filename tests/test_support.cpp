@@ -53,6 +53,14 @@ int count_entries(const fs::path& dir) {
   return n;
 }
 
+pipeline::Plan plan_for(const pipeline::Settings& settings, int width, int height, double fps) {
+  io::SourceInfo info;
+  info.width = width;
+  info.height = height;
+  info.frames_per_second = fps;
+  return pipeline::compile_plan(settings, info, io::SinkNeeds::kLinear);
+}
+
 cv::Mat constant_frame(int width, int height, const cv::Vec3f& rgb) {
   return cv::Mat(height, width, CV_32FC3, cv::Scalar(rgb[0], rgb[1], rgb[2]));
 }

@@ -5,6 +5,8 @@
 #include <opencv2/core.hpp>
 #include <string>
 
+#include "pipeline/plan.hpp"
+
 namespace eyestream::test {
 
 // A fresh empty folder under the system temp folder, removed on destruction.
@@ -37,5 +39,8 @@ int count_entries(const std::filesystem::path& dir);
 
 // A constant CV_32FC3 frame.
 cv::Mat constant_frame(int width, int height, const cv::Vec3f& rgb);
+
+// The plan for `settings` and a width x height source, display-linear output.
+pipeline::Plan plan_for(const pipeline::Settings& settings, int width, int height, double fps = 30.0);
 
 }  // namespace eyestream::test
