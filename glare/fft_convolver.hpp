@@ -27,8 +27,6 @@ class FftConvolver {
   // do not depend on the thread count or on timing.
   cv::Mat convolve(const cv::Mat& rgb, const PsfWeights& w) const;
 
-  cv::Size padded_size() const { return {nx_, ny_}; }
-
  private:
   struct Channel;
   int width_, height_, nx_, ny_;

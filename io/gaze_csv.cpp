@@ -55,15 +55,6 @@ std::vector<GazeSample> parse_gaze_csv(const std::string& text, const std::strin
   return out;
 }
 
-std::vector<GazeSample> read_gaze_csv(const std::string& path, GazeUnits units, int frame_width, int frame_height) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open gaze log");
-  protect_input(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parse_gaze_csv(ss.str(), path, units, frame_width, frame_height);
-}
-
 void write_gaze_csv(const std::string& path, const std::vector<GazeSample>& samples) {
   std::ostringstream out;
   out.precision(9);

@@ -11,13 +11,11 @@ namespace eyestream::io {
 
 enum class GazeUnits { kPixels, kNormalised };
 
-// Parses a native gaze log. Positions in kNormalised units (0..1 of the
-// frame) are scaled by frame_width x frame_height. Blink and lost samples
-// may leave x and y empty. Times must be finite and strictly increasing.
-// Any malformed line is an InputError naming the file and line number.
-std::vector<GazeSample> read_gaze_csv(const std::string& path, GazeUnits units, int frame_width, int frame_height);
-
-// Same, from text in memory (`name` stands for the file in messages).
+// Parses a native gaze log (read files with io::read_gaze). Positions in
+// kNormalised units (0..1 of the frame) are scaled by frame_width x
+// frame_height. Blink and lost samples may leave x and y empty. Times must
+// be finite and strictly increasing. Any malformed line is an InputError
+// naming the file (`name`) and line number.
 std::vector<GazeSample> parse_gaze_csv(const std::string& text, const std::string& name, GazeUnits units,
                                        int frame_width, int frame_height);
 

@@ -79,7 +79,7 @@ void RetinaStage::advance(const cv::Mat& rgb, const std::vector<GazeSegment>& se
 
 void RetinaStage::composite(const cv::Mat& tone_mapped, double gaze_x, double gaze_y, cv::Mat& out) const {
   const retina::AfterimageMaps maps = state_.afterimages(plan_.retina.afterimages, visibility_);
-  const cv::Mat gain = grid_.draw(maps.gain, gaze_x, gaze_y, cv::Scalar::all(1.0));
+  const cv::Mat gain = grid_.draw(maps.gain_excess, gaze_x, gaze_y, cv::Scalar::all(0.0));
   const cv::Mat bleach = grid_.draw(maps.bleach, gaze_x, gaze_y, cv::Scalar::all(0.0));
   retina::composite_afterimages(tone_mapped, gain, bleach, out);
 }

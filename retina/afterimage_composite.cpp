@@ -6,12 +6,6 @@
 
 namespace eyestream::retina {
 
-namespace {
-// A gain map of exactly 1, drawn bilinearly to the display, can come back
-// as 1 - 6e-8 (float interpolation weights): that still counts as rest.
-constexpr float kRestTolerance = 1e-6f;
-}  // namespace
-
 cv::Mat to_cone_stimulus(const cv::Mat& rgb, int depth) {
   CV_Assert(rgb.type() == CV_32FC3);
   cv::Mat lms;
@@ -25,6 +19,7 @@ cv::Mat to_cone_stimulus(const cv::Mat& rgb, int depth) {
 }
 
 void composite_afterimages(const cv::Mat& tone_mapped, const cv::Mat& gain, const cv::Mat& bleach, cv::Mat& out) {
+  // `gain` holds alpha^j2 - 1.
   CV_Assert(tone_mapped.type() == CV_32FC3 && gain.size() == tone_mapped.size() && bleach.size() == tone_mapped.size());
   const cv::Matx33f to_lms = rgb_to_lms_f(), to_rgb = lms_to_rgb_f(), h = afterimage_matrix_f();
   out.create(tone_mapped.size(), CV_32FC3);
@@ -35,14 +30,13 @@ void composite_afterimages(const cv::Mat& tone_mapped, const cv::Mat& gain, cons
       const cv::Vec3f* b = bleach.ptr<cv::Vec3f>(y);
       cv::Vec3f* o = out.ptr<cv::Vec3f>(y);
       for (int x = 0; x < tone_mapped.cols; ++x) {
-        const bool at_rest = std::abs(g[x][0] - 1.0f) <= kRestTolerance && std::abs(g[x][1] - 1.0f) <= kRestTolerance &&
-                             std::abs(g[x][2] - 1.0f) <= kRestTolerance && b[x] == cv::Vec3f(0, 0, 0);
+        const bool at_rest = g[x] == cv::Vec3f(0, 0, 0) && b[x] == cv::Vec3f(0, 0, 0);
         if (at_rest) {
           o[x] = j[x];
           continue;
         }
         const cv::Vec3f lms = to_lms * j[x];
-        o[x] = to_rgb * lms.mul(g[x]) + h * b[x];
+        o[x] = to_rgb * (lms + lms.mul(g[x])) + h * b[x];
       }
     }
   });

@@ -10,10 +10,10 @@ namespace eyestream::retina {
 // non-finite and negative results set to 0: what the photoreceptors receive.
 cv::Mat to_cone_stimulus(const cv::Mat& rgb, int depth);
 
-// out = LMS->RGB(gain * RGB->LMS(tone_mapped)) + H * bleach, per pixel, all
-// frame-sized CV_32FC3 (gain and bleach in LMS). Where gain is 1 (within
-// 1e-6) and bleach exactly 0 (a retina at rest) the pixel is copied unchanged, so a
-// steady scene shows the plain tone curve bit for bit.
-void composite_afterimages(const cv::Mat& tone_mapped, const cv::Mat& gain, const cv::Mat& bleach, cv::Mat& out);
+// out = LMS->RGB((1 + gain_excess) * RGB->LMS(tone_mapped)) + H * bleach,
+// per pixel, all frame-sized CV_32FC3 (gain_excess and bleach in LMS).
+// Where both are exactly 0 (a retina at rest) the pixel is copied
+// unchanged, so a steady scene shows the plain tone curve bit for bit.
+void composite_afterimages(const cv::Mat& tone_mapped, const cv::Mat& gain_excess, const cv::Mat& bleach, cv::Mat& out);
 
 }  // namespace eyestream::retina

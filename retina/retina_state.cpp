@@ -62,7 +62,7 @@ template <typename T>
 void afterimage_sites(const PhotoreceptorParams& p, double c_max, const AfterimageOptions& o, const cv::Mat& bleached,
                       const cv::Mat& deficit, const cv::Mat& bleached_rest, const cv::Mat& response,
                       const cv::Mat& visibility, AfterimageMaps& maps) {
-  maps.gain.create(bleached.size(), CV_32FC3);
+  maps.gain_excess.create(bleached.size(), CV_32FC3);
   maps.bleach.create(bleached.size(), CV_32FC3);
   cv::parallel_for_(cv::Range(0, bleached.rows), [&](const cv::Range& rows) {
     for (int y = rows.start; y < rows.end; ++y) {
@@ -71,7 +71,7 @@ void afterimage_sites(const PhotoreceptorParams& p, double c_max, const Afterima
       const Px<T>* b_inf = bleached_rest.ptr<Px<T>>(y);
       const Px<T>* r = response.ptr<Px<T>>(y);
       const float* visible = visibility.ptr<float>(y);
-      cv::Vec3f* gain = maps.gain.ptr<cv::Vec3f>(y);
+      cv::Vec3f* gain = maps.gain_excess.ptr<cv::Vec3f>(y);
       cv::Vec3f* bleach = maps.bleach.ptr<cv::Vec3f>(y);
       for (int x = 0; x < bleached.cols; ++x)
         for (int c = 0; c < 3; ++c) {
@@ -80,7 +80,7 @@ void afterimage_sites(const PhotoreceptorParams& p, double c_max, const Afterima
             g = std::pow(double(local_gain<T>(d[x][c], r[x][c], T(c_max), T(p.gain_epsilon))), p.adaptation_strength);
           if (o.bleaching)  // seed 001 eq. 12: j1 (C / C_max) max(B - B_inf, 0)
             j = p.bleaching_strength * (1.0 - double(d[x][c]) / c_max) * std::max(double(b[x][c] - b_inf[x][c]), 0.0);
-          gain[x][c] = float(1.0 + visible[x] * (g - 1.0));
+          gain[x][c] = float(visible[x] * (g - 1.0));
           bleach[x][c] = float(visible[x] * j);
         }
     }

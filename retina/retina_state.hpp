@@ -15,11 +15,12 @@ struct AfterimageOptions {
   bool local_adaptation = true;  // adaptation afterimages (the alpha^j2 gain)
 };
 
-// The two afterimage terms on the grid (both CV_32FC3, LMS):
-// `gain` = alpha^j2 per cone (1 at rest) and `bleach` = j1 (C/C_max)
-// max(B - B_inf, 0) per cone (0 at rest), faded with eccentricity.
+// The two afterimage terms on the grid (both CV_32FC3, LMS), faded with
+// eccentricity, each 0 at rest: `gain_excess` = alpha^j2 - 1 per cone and
+// `bleach` = j1 (C/C_max) max(B - B_inf, 0) per cone. Zero at rest stays
+// exactly zero through bilinear drawing to the display.
 struct AfterimageMaps {
-  cv::Mat gain;
+  cv::Mat gain_excess;
   cv::Mat bleach;
 };
 

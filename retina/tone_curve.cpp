@@ -12,8 +12,8 @@ double plateau(double log_l, const ToneCurveParams& p) {
 ToneCurve::ToneCurve(double adaptation_log, const ToneCurveParams& p) {
   const double m = plateau(adaptation_log, p);
   // seed 001 eq. 2: sigma = (Ib^n / M - Ib^n)^(1/n) = Ib (1/M - 1)^(1/n)
-  log_sigma_ = adaptation_log + std::log10(1.0 / m - 1.0) / p.exponent;
-  sigma_ = float(std::pow(10.0, log_sigma_));
+  const double log_sigma = adaptation_log + std::log10(1.0 / m - 1.0) / p.exponent;
+  sigma_ = float(std::pow(10.0, log_sigma));
   exponent_ = float(p.exponent);
 }
 

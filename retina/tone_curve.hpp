@@ -33,10 +33,8 @@ class ToneCurve {
   // R(I) = I^n / (I^n + sigma^n) in [0, 1); 0 for I <= 0 or NaN; 1 for +inf
   // (seed 001 eq. 1).
   float response(float luminance) const;
-  double log_sigma() const { return log_sigma_; }
 
  private:
-  double log_sigma_;
   float sigma_;
   float exponent_;
 };

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "io/error.hpp"
+#include "io/gaze_import.hpp"
 #include "tests/test_support.hpp"
 
 namespace eyestream::io {
@@ -66,7 +67,9 @@ TEST(GazeCsv, WriteThenReadRoundTrips) {
   std::vector<GazeSample> in = {
       {0.0, 1.5, 2.5, EyeState::kOpen}, {0.1, 3, 4, EyeState::kClosed}, {0.2, 5, 6, EyeState::kLost}};
   write_gaze_csv(dir / "g.csv", in);
-  const auto out = read_gaze_csv(dir / "g.csv", GazeUnits::kPixels, 10, 10);
+  GazeImportOptions o;
+  o.frame_width = o.frame_height = 10;
+  const auto out = read_gaze(dir / "g.csv", o);
   ASSERT_EQ(out.size(), 3u);
   EXPECT_DOUBLE_EQ(out[0].x, 1.5);
   EXPECT_EQ(out[1].state, EyeState::kClosed);

@@ -4,7 +4,7 @@
 
 #include "io/exr_file.hpp"
 #include "io/exr_sequence_source.hpp"
-#include "io/gaze_csv.hpp"
+#include "io/gaze_import.hpp"
 #include "samples/scene.hpp"
 #include "tests/test_support.hpp"
 
@@ -52,7 +52,10 @@ TEST(NightDrive, WritesHalfFloatFramesInCandelasWithGazeAndABlink) {
   EXPECT_GT(*std::min_element(darkest.begin(), darkest.end()), 1e-3);
   EXPECT_LT(*std::max_element(darkest.begin(), darkest.end()), 0.05);
 
-  const auto gaze = io::read_gaze_csv(dir / "gaze.csv", io::GazeUnits::kPixels, 320, 180);
+  io::GazeImportOptions frame;
+  frame.frame_width = 320;
+  frame.frame_height = 180;
+  const auto gaze = io::read_gaze(dir / "gaze.csv", frame);
   EXPECT_GT(gaze.size(), 600u);
   EXPECT_TRUE(
       std::any_of(gaze.begin(), gaze.end(), [](const io::GazeSample& s) { return s.state == io::EyeState::kClosed; }));
