@@ -16,7 +16,7 @@ pipeline::Plan plan_for(int width, const std::string& model) {
   info.width = width;
   info.height = width * 9 / 16;
   info.frames_per_second = 30;
-  return pipeline::compile_plan(s, info, io::SinkNeeds::kLinear);
+  return pipeline::compile_plan(s, info);
 }
 
 cv::Mat night_frame(int width) {

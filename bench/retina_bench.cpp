@@ -19,7 +19,7 @@ void BM_RetinaFrame(benchmark::State& state) {
   info.width = width;
   info.height = height;
   info.frames_per_second = 30;
-  pipeline::EyeSimulator eye(pipeline::compile_plan(s, info, io::SinkNeeds::kLinear));
+  pipeline::EyeSimulator eye(pipeline::compile_plan(s, info));
   cv::Mat frame(height, width, CV_32FC3);
   cv::randu(frame, 0.0, 1000.0);
   std::int64_t index = 0;

@@ -6,7 +6,6 @@
 #include "glare/viewer.hpp"
 #include "pipeline/pixel_checks.hpp"
 #include "retina/adaptation.hpp"
-#include "retina/display_encoding.hpp"
 #include "retina/log_luminance_field.hpp"
 #include "retina/luminance.hpp"
 #include "retina/tone_curve.hpp"
@@ -21,7 +20,7 @@ EyeSimulator::EyeSimulator(Plan plan)
       glare_(plan_.glare.enabled ? std::make_unique<GlareStage>(plan_) : nullptr) {}
 
 io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::vector<GazeSegment>& segments,
-                                       FrameReport* report) {
+                                       FrameReport* report, const cv::Mat& target_mask) {
   // Non-finite pixels are counted and seen as black; they reach no stage.
   const std::int64_t nonfinite = count_nonfinite(frame.rgb);
   const cv::Mat scene = nonfinite ? finite_copy(frame.rgb) : frame.rgb;
@@ -57,9 +56,6 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
   else
     mesopic_->render(retinal, curve, *adaptation_, frame.time_s, seen);
   retina_->composite(seen, last.x, last.y, out.linear);
-  if (plan_.needs != io::SinkNeeds::kLinear)
-    retina::encode_display(out.linear, plan_.needs == io::SinkNeeds::kCode16 ? 16 : 8, frame.index, plan_.encoding,
-                           out.code);
   if (report) {
     report->adaptation_log = *adaptation_;
     report->target_log = target;
@@ -68,12 +64,13 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
     report->eye_closed = last.eye_closed;
     report->nonfinite_pixels = nonfinite;
     report->glare_ran = glare_ran;
-    if (plan_.report) fill_glare_report(scene, last, *report);
+    if (plan_.report) fill_glare_report(scene, last, target_mask, *report);
   }
   return out;
 }
 
-void EyeSimulator::fill_glare_report(const cv::Mat& scene, const GazeSegment& gaze, FrameReport& r) const {
+void EyeSimulator::fill_glare_report(const cv::Mat& scene, const GazeSegment& gaze, const cv::Mat& target_mask,
+                                     FrameReport& r) const {
   cv::Mat luminance(scene.size(), CV_32F);
   scene.forEach<cv::Vec3f>(
       [&](const cv::Vec3f& p, const int* pos) { luminance.at<float>(pos[0], pos[1]) = retina::photopic_luminance(p); });
@@ -81,11 +78,22 @@ void EyeSimulator::fill_glare_report(const cv::Mat& scene, const GazeSegment& ga
   cv::minMaxLoc(luminance, nullptr, &peak);
   r.peak_cd_m2 = peak;
   r.pupil_mm = glare::pupil_diameter_mm(*adaptation_);
+  const std::optional<TargetLuminance> target = measure_target(luminance, target_mask);
+  if (target) {
+    r.target_cd_m2 = target->target_cd_m2;
+    r.background_cd_m2 = target->background_cd_m2;
+  }
   if (!glare_ || gaze.eye_closed) return;
   const std::optional<double> veil = glare_->veil_at(luminance, *adaptation_, gaze.x, gaze.y, plan_.veil_exclusion_deg);
-  if (!veil) return;
-  r.veil_cd_m2 = *veil;
-  r.ti_percent = glare::threshold_increment(*veil, std::pow(10.0, *adaptation_));
+  if (veil) {
+    r.veil_cd_m2 = *veil;
+    r.ti_percent = glare::threshold_increment(*veil, std::pow(10.0, *adaptation_));
+  }
+  if (target) {
+    const std::optional<double> target_veil =
+        glare_->veil_at(luminance, *adaptation_, target->x, target->y, plan_.veil_exclusion_deg);
+    if (target_veil) r.target_veil_cd_m2 = *target_veil;
+  }
 }
 
 double EyeSimulator::first_target(const cv::Mat& scene, const GazeSegment& first) const {

@@ -12,6 +12,7 @@
 #include "pipeline/mesopic_stage.hpp"
 #include "pipeline/plan.hpp"
 #include "pipeline/retina_stage.hpp"
+#include "pipeline/target_region.hpp"
 
 namespace eyestream::pipeline {
 
@@ -28,6 +29,10 @@ struct FrameReport {
   double peak_cd_m2 = 0.0;   // brightest scene pixel (photopic luminance)
   double veil_cd_m2 = -1.0;  // veiling luminance at the gaze; -1 without a Vos PSF or with eyes closed
   double ti_percent = -1.0;  // threshold increment at the gaze; -1 when the veil is unknown
+  // Filled when the report is on and the frame has a target (target_region.hpp):
+  double target_cd_m2 = -1.0;        // mean scene luminance over the target; -1 without one
+  double background_cd_m2 = -1.0;    // mean over its surround
+  double target_veil_cd_m2 = -1.0;   // veiling luminance at the target's centroid; -1 when unknown
 };
 
 class EyeSimulator {
@@ -40,15 +45,18 @@ class EyeSimulator {
   // darkness while the eye is closed, with any afterimages on top. On the first frame the viewer starts
   // adapted to the first segment's target. Non-finite pixels are counted and
   // seen as black; they never enter the state.
+  // Returns DisplayFrame::linear; encoding is the caller's (preview.hpp).
+  // `target_mask` (CV_8U, may be empty) marks the target the report measures.
   io::DisplayFrame process(const io::SceneFrame& frame, const std::vector<GazeSegment>& segments,
-                           FrameReport* report = nullptr);
+                           FrameReport* report = nullptr, const cv::Mat& target_mask = cv::Mat());
 
   double adaptation_log() const { return adaptation_.value_or(plan_.dark_log); }
   const RetinaStage& retina() const { return *retina_; }
   const GlareStage* glare() const { return glare_.get(); }
 
  private:
-  void fill_glare_report(const cv::Mat& scene, const GazeSegment& gaze, FrameReport& r) const;
+  void fill_glare_report(const cv::Mat& scene, const GazeSegment& gaze, const cv::Mat& target_mask,
+                         FrameReport& r) const;
   double first_target(const cv::Mat& scene, const GazeSegment& first) const;
 
   Plan plan_;

@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <string>
 
 #include "io/error.hpp"
@@ -10,6 +11,7 @@
 #include "pipeline/parameter.hpp"
 #include "pipeline/psf_command.hpp"
 #include "pipeline/quality_presets.hpp"
+#include "pipeline/report_charts.hpp"
 #include "pipeline/run.hpp"
 #include "pipeline/settings.hpp"
 #include "samples/scene.hpp"
@@ -84,6 +86,11 @@ int main(int argc, char** argv) {
   curves_cmd->add_option("-o,--output", curves_output, "PNG file")->required();
   curve_params.bind(*curves_cmd);
 
+  std::string report_csv, report_png;
+  CLI::App* report_cmd = app.add_subcommand("report", "draw the charts of a run's --report CSV (PNG)");
+  report_cmd->add_option("csv", report_csv, "the report CSV of `eyestream run --report`")->required();
+  report_cmd->add_option("-o,--output", report_png, "PNG file (default: the CSV's name with .png)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -112,6 +119,10 @@ int main(int argc, char** argv) {
     } else if (*psf_cmd) {
       psf_params.apply("");
       std::printf("%s", write_psf(psf_settings, psf).text().c_str());
+    } else if (*report_cmd) {
+      if (report_png.empty()) report_png = std::filesystem::path(report_csv).replace_extension(".png").string();
+      draw_report_file(report_csv, report_png);
+      std::fprintf(stderr, "eyestream: wrote %s\n", report_png.c_str());
     } else if (*sample_cmd) {
       const samples::Scene& s = samples::find_scene(scene_name);
       s.generate(scene);

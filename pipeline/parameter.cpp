@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "io/error.hpp"
+#include "io/staged_file.hpp"
 
 namespace eyestream::pipeline {
 
@@ -149,23 +150,30 @@ void ParamSet::bind(CLI::App& app) {
   }
 }
 
-void ParamSet::apply(const std::string& config_path) {
-  if (!config_path.empty()) {
-    std::ifstream in(config_path);
-    if (!in) throw InputError(config_path + ": cannot open config file");
-    nlohmann::json config;
-    try {
-      in >> config;
-    } catch (const std::exception& e) {
-      throw InputError(config_path + ": not valid JSON: " + e.what());
-    }
-    if (!config.is_object()) throw InputError(config_path + ": config must be a JSON object of parameter names");
-    for (auto it = config.begin(); it != config.end(); ++it) {
-      auto found = std::find_if(params_.begin(), params_.end(), [&](const Param& p) { return p.name == it.key(); });
-      if (found == params_.end()) throw UsageError(config_path + ": unknown parameter '" + it.key() + "'");
-      set_json(*found, it.value(), config_path + ": ");
-    }
+void ParamSet::apply_json(const nlohmann::json& object, const std::string& origin) {
+  for (auto it = object.begin(); it != object.end(); ++it) {
+    auto found = std::find_if(params_.begin(), params_.end(), [&](const Param& p) { return p.name == it.key(); });
+    if (found == params_.end()) throw UsageError(origin + ": unknown parameter '" + it.key() + "'");
+    set_json(*found, it.value(), origin + ": ");
   }
+}
+
+nlohmann::json read_parameter_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open the parameter file");
+  io::protect_input(path);
+  nlohmann::json object;
+  try {
+    in >> object;
+  } catch (const std::exception& e) {
+    throw InputError(path + ": not valid JSON: " + e.what());
+  }
+  if (!object.is_object()) throw InputError(path + ": expected a JSON object of parameter names");
+  return object;
+}
+
+void ParamSet::apply(const std::string& config_path) {
+  if (!config_path.empty()) apply_json(read_parameter_file(config_path), config_path);
   for (size_t i = 0; i < params_.size(); ++i)
     if (options_.at(i)->count() > 0)
       set_text(params_[i], is_bool(params_[i]) ? (flag_votes_[i] > 0 ? "true" : "false") : raw_[i], "");

@@ -55,6 +55,10 @@ class ParamSet {
   // declaration; UsageError naming the parameter (and file) otherwise.
   void apply(const std::string& config_path);
 
+  // Sets each parameter named by a key of the JSON object; UsageError
+  // naming `origin` for an unknown name or a bad value.
+  void apply_json(const nlohmann::json& object, const std::string& origin);
+
   // Sets one parameter from text or JSON; `origin` prefixes messages.
   static void set_text(const Param& p, const std::string& text, const std::string& origin);
   static void set_json(const Param& p, const nlohmann::json& value, const std::string& origin);
@@ -67,5 +71,9 @@ class ParamSet {
   std::vector<int> flag_votes_;  // flags: +1 per --x, -1 per --no-x; the last word wins by sign
   std::vector<CLI::Option*> options_;
 };
+
+// Reads a JSON object of parameter values (a config or viewer file) and
+// protects it from being overwritten; InputError naming the file.
+nlohmann::json read_parameter_file(const std::string& path);
 
 }  // namespace eyestream::pipeline

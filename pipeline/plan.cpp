@@ -7,7 +7,7 @@
 
 namespace eyestream::pipeline {
 
-Plan compile_plan(const Settings& s, const io::SourceInfo& source, io::SinkNeeds needs) {
+Plan compile_plan(const Settings& s, const io::SourceInfo& source) {
   if (!(s.mesopic_colour.bottom_log < s.mesopic_colour.top_log))
     throw UsageError("--mesopic-bottom must be below --mesopic-top");
   if (!(s.tone.plateau_low < s.tone.plateau_high)) throw UsageError("--plateau-low must be below --plateau-high");
@@ -43,7 +43,6 @@ Plan compile_plan(const Settings& s, const io::SourceInfo& source, io::SinkNeeds
   p.mesopic.colour = s.mesopic_colour;
   p.mesopic.acuity = s.acuity_loss;
   p.mesopic.acuity_params = s.acuity;
-  p.needs = needs;
   p.report = !s.report.empty();
   p.veil_exclusion_deg = s.veil_exclusion_deg;
   return p;

@@ -5,7 +5,6 @@
 #include <string>
 
 #include "glare/viewer.hpp"
-#include "io/frame_sink.hpp"
 #include "io/frame_source.hpp"
 #include "pipeline/settings.hpp"
 #include "retina/acuity_loss.hpp"
@@ -54,7 +53,6 @@ struct Plan {
   GlarePlan glare;
   RetinaPlan retina;
   MesopicPlan mesopic;
-  io::SinkNeeds needs = io::SinkNeeds::kCode8;
   bool report = false;  // fill the disability-glare fields of FrameReport
   double veil_exclusion_deg = 1.0;
 
@@ -64,6 +62,6 @@ struct Plan {
 
 // UsageError when the settings contradict each other (plateau-low must be
 // below plateau-high).
-Plan compile_plan(const Settings& s, const io::SourceInfo& source, io::SinkNeeds needs);
+Plan compile_plan(const Settings& s, const io::SourceInfo& source);
 
 }  // namespace eyestream::pipeline

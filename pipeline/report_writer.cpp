@@ -8,6 +8,8 @@
 
 #include "glare/veiling_luminance.hpp"
 #include "io/staged_file.hpp"
+#include "pipeline/report_charts.hpp"
+#include "pipeline/target_region.hpp"
 
 namespace eyestream::pipeline {
 
@@ -19,6 +21,9 @@ std::string number(double v) {
   return buf;
 }
 
+// A value, or an empty field when it is unknown.
+std::string field(bool known, double v) { return known ? number(v) : ""; }
+
 void write_text(const std::string& path, const std::string& text) {
   io::StagedFile file(path);
   io::write_all(file, std::vector<unsigned char>(text.begin(), text.end()));
@@ -27,42 +32,68 @@ void write_text(const std::string& path, const std::string& text) {
 
 }  // namespace
 
-ReportWriter::ReportWriter(std::string csv_path, double viewer_age_years)
-    : path_(std::move(csv_path)), age_(viewer_age_years) {
-  rows_ = "frame,time_s,gaze_x,gaze_y,eye,adaptation_cd_m2,pupil_mm,peak_cd_m2,glare,veil_cd_m2,ti_percent,ti_valid\n";
+ReportWriter::ReportWriter(std::string csv_path, std::vector<ReportViewer> viewers)
+    : path_(std::move(csv_path)), viewers_(std::move(viewers)), summary_(viewers_.size()) {
+  for (ReportViewer& v : viewers_) std::replace(v.label.begin(), v.label.end(), ',', ';');  // one CSV field
+  rows_ = std::string(kReportColumns) + "\n";
 }
 
-void ReportWriter::add(std::int64_t frame, double time_s, const FrameReport& r) {
+void ReportWriter::add(std::int64_t frame, double time_s, size_t viewer, const FrameReport& r) {
   const double adaptation = std::pow(10.0, r.adaptation_log);
-  const bool veil = r.veil_cd_m2 >= 0.0;
-  rows_ += std::to_string(frame) + "," + number(time_s) + "," + number(r.gaze_x) + "," + number(r.gaze_y) + "," +
-           (r.eye_closed ? "closed" : "open") + "," + number(adaptation) + "," + number(r.pupil_mm) + "," +
-           number(r.peak_cd_m2) + "," + (r.glare_ran ? "1" : "0") + "," + (veil ? number(r.veil_cd_m2) : "") + "," +
-           (veil ? number(r.ti_percent) : "") + "," + (glare::threshold_increment_valid(adaptation) ? "1" : "0") + "\n";
-  ++frames_;
-  glare_frames_ += r.glare_ran;
-  closed_frames_ += r.eye_closed;
-  min_adaptation_ = std::min(min_adaptation_, adaptation);
-  max_adaptation_ = std::max(max_adaptation_, adaptation);
+  const bool veil = r.veil_cd_m2 >= 0.0, target = r.target_cd_m2 >= 0.0;
+  const bool target_veil = target && r.target_veil_cd_m2 >= 0.0;
+  const double contrast = target ? luminance_contrast(r.target_cd_m2, r.background_cd_m2) : 0.0;
+  const double veiled = target_veil ? luminance_contrast(r.target_cd_m2, r.background_cd_m2, r.target_veil_cd_m2) : 0.0;
+  rows_ += std::to_string(frame) + "," + number(time_s) + "," + viewers_[viewer].label + "," + number(r.gaze_x) + "," +
+           number(r.gaze_y) + "," + (r.eye_closed ? "closed" : "open") + "," + number(adaptation) + "," +
+           number(r.pupil_mm) + "," + number(r.peak_cd_m2) + "," + (r.glare_ran ? "1" : "0") + "," +
+           field(veil, r.veil_cd_m2) + "," + field(veil, r.ti_percent) + "," +
+           (glare::threshold_increment_valid(adaptation) ? "1" : "0") + "," + field(target, r.target_cd_m2) + "," +
+           field(target, r.background_cd_m2) + "," + field(target_veil, r.target_veil_cd_m2) + "," +
+           field(target, contrast) + "," + field(target_veil, veiled) + "\n";
+  Summary& s = summary_[viewer];
+  ++s.frames;
+  s.glare_frames += r.glare_ran;
+  s.closed_frames += r.eye_closed;
+  s.min_adaptation = std::min(s.min_adaptation, adaptation);
+  s.max_adaptation = std::max(s.max_adaptation, adaptation);
   if (veil) {
-    ++veil_frames_;
-    sum_veil_ += r.veil_cd_m2;
-    max_veil_ = std::max(max_veil_, r.veil_cd_m2);
-    max_ti_ = std::max(max_ti_, r.ti_percent);
+    ++s.veil_frames;
+    s.sum_veil += r.veil_cd_m2;
+    s.max_veil = std::max(s.max_veil, r.veil_cd_m2);
+    s.max_ti = std::max(s.max_ti, r.ti_percent);
+  }
+  if (target) {
+    ++s.target_frames;
+    s.min_contrast = std::min(s.min_contrast, std::abs(contrast));
+    if (target_veil) s.min_contrast_veiled = std::min(s.min_contrast_veiled, std::abs(veiled));
   }
 }
 
 void ReportWriter::finish() {
-  nlohmann::json summary = {
-      {"frames", frames_},
-      {"viewer_age_years", age_},
-      {"frames_with_glare", glare_frames_},
-      {"frames_with_eyes_closed", closed_frames_},
-      {"adaptation_cd_m2", {{"min", min_adaptation_}, {"max", max_adaptation_}}},
-      {"veil_cd_m2", {{"max", max_veil_}, {"mean", veil_frames_ ? sum_veil_ / veil_frames_ : 0.0}}},
-      {"ti_percent_max", max_ti_}};
+  nlohmann::json viewers = nlohmann::json::array();
+  for (size_t i = 0; i < viewers_.size(); ++i) {
+    const Summary& s = summary_[i];
+    nlohmann::json v = {{"label", viewers_[i].label},
+                        {"viewer_age_years", viewers_[i].age_years},
+                        {"frames", s.frames},
+                        {"frames_with_glare", s.glare_frames},
+                        {"frames_with_eyes_closed", s.closed_frames},
+                        {"adaptation_cd_m2", {{"min", s.min_adaptation}, {"max", s.max_adaptation}}},
+                        {"veil_cd_m2", {{"max", s.max_veil}, {"mean", s.veil_frames ? s.sum_veil / s.veil_frames : 0.0}}},
+                        {"ti_percent_max", s.max_ti},
+                        {"frames_with_target", s.target_frames}};
+    if (s.target_frames) {
+      v["target_abs_contrast_min"] = s.min_contrast;
+      if (s.min_contrast_veiled < 1e300) v["target_abs_contrast_veiled_min"] = s.min_contrast_veiled;
+    }
+    viewers.push_back(v);
+  }
+  const std::int64_t frames = summary_.empty() ? 0 : summary_[0].frames;
+  const nlohmann::json summary = {{"frames", frames}, {"viewers", viewers}};
   write_text(path_, rows_);
   write_text(std::filesystem::path(path_).replace_extension(".json").string(), summary.dump(2) + "\n");
+  write_report_charts(parse_report(rows_, path_), std::filesystem::path(path_).replace_extension(".png").string());
 }
 
 }  // namespace eyestream::pipeline

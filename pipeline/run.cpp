@@ -10,11 +10,11 @@
 #include "io/gaze_import.hpp"
 #include "io/library_logging.hpp"
 #include "io/sink_factory.hpp"
-#include "pipeline/eye_simulator.hpp"
 #include "pipeline/gaze_timeline.hpp"
-#include "pipeline/plan.hpp"
+#include "pipeline/preview_renderer.hpp"
 #include "pipeline/progress.hpp"
 #include "pipeline/report_writer.hpp"
+#include "pipeline/target_region.hpp"
 
 namespace eyestream::pipeline {
 
@@ -53,9 +53,28 @@ io::GazeImportOptions gaze_import_options(const Settings& s, const io::SourceInf
 
 std::string describe_run(const Settings& s) {
   io::ExrSequenceSource source(s.input, s.exr);
-  const Plan plan = compile_plan(s, source.info(), io::sink_needs(s.output, s.sink));
-  return s.input + ": " + source.info().description + "\n" + plan.describe();
+  const PreviewRenderer renderer(s, source.info(), io::sink_needs(s.output, s.sink));
+  return s.input + ": " + source.info().description + "\n" + renderer.describe();
 }
+
+namespace {
+
+std::unique_ptr<ReportWriter> report_writer(const Settings& s, const PreviewRenderer& renderer) {
+  if (s.report.empty()) return nullptr;
+  std::vector<ReportViewer> viewers;
+  for (size_t i = 0; i < renderer.panels(); ++i)
+    if (renderer.spec(i).viewer)
+      viewers.push_back({renderer.spec(i).label, renderer.spec(i).settings.viewer.age_years});
+  return std::make_unique<ReportWriter>(s.report, std::move(viewers));
+}
+
+void log_frame(const io::SceneFrame& frame, const FrameReport& r) {
+  std::fprintf(stderr, "frame %lld t=%.3f s gaze=(%.1f,%.1f)%s adaptation=%.3f target=%.3f glare=%s\n",
+               (long long)frame.index, frame.time_s, r.gaze_x, r.gaze_y, r.eye_closed ? " closed" : "",
+               r.adaptation_log, r.target_log, r.glare_ran ? "ran" : "skipped (nothing above the display peak)");
+}
+
+}  // namespace
 
 RunSummary run(const Settings& s) {
   cv::setNumThreads(s.threads > 0 ? s.threads : -1);
@@ -64,47 +83,45 @@ RunSummary run(const Settings& s) {
   const io::SourceInfo& info = source.info();
   std::vector<io::GazeSample> samples;
   if (!s.gaze.empty()) samples = io::read_gaze(s.gaze, gaze_import_options(s, info));
+  const TargetRegion target(s.target_rect, s.target_mask, cv::Size(info.width, info.height));
   io::SinkOptions sink_options = s.sink;
   sink_options.video.frames_per_second = info.frames_per_second;
   std::unique_ptr<io::FrameSink> sink = io::make_sink(s.output, sink_options);
-  const Plan plan = compile_plan(s, info, sink->needs());
-  if (s.verbose) std::fprintf(stderr, "%s: %s\n%s", s.input.c_str(), info.description.c_str(), plan.describe().c_str());
-  EyeSimulator eye(plan);
+  PreviewRenderer renderer(s, info, sink->needs());
+  if (s.verbose) std::fprintf(stderr, "%s: %s\n%s", s.input.c_str(), info.description.c_str(), renderer.describe().c_str());
+  const size_t main = renderer.main_panel();
   const GazeTimeline timeline(samples, info.width / 2.0, info.height / 2.0);
+  std::unique_ptr<ReportWriter> report = report_writer(s, renderer);
 
   RunSummary summary;
   summary.output = s.output;
   Progress progress(info.frame_count, s.progress);
-  std::optional<ReportWriter> report_writer;
-  if (!s.report.empty()) report_writer.emplace(s.report, s.viewer.age_years);
   std::optional<io::SceneFrame> current = source.next();
   while (current) {
     std::optional<io::SceneFrame> next = source.next();
     const double t1 = next ? next->time_s : current->time_s + 1.0 / info.frames_per_second;
-    FrameReport report;
-    const io::DisplayFrame shown = eye.process(*current, timeline.segments(current->time_s, t1), &report);
-    if (report.nonfinite_pixels > 0 && s.bad_pixels == "fail")
+    const io::DisplayFrame shown =
+        renderer.process(*current, timeline.segments(current->time_s, t1), target.mask(current->index));
+    const FrameReport& main_report = renderer.report(main);
+    if (main_report.nonfinite_pixels > 0 && s.bad_pixels == "fail")
       throw InputError(current->source + ": frame " + std::to_string(current->index) + " has " +
-                       std::to_string(report.nonfinite_pixels) +
+                       std::to_string(main_report.nonfinite_pixels) +
                        " NaN or infinite pixels (--bad-pixels clamp to go on)");
     sink->write(shown);
-    if (report_writer) report_writer->add(current->index, current->time_s, report);
-    if (!s.state_exr.empty() && current->index == s.state_frame) eye.retina().write_state(s.state_exr);
-    summary.nonfinite_pixels += report.nonfinite_pixels;
-    if (s.verbose)
-      std::fprintf(stderr, "frame %lld t=%.3f s gaze=(%.1f,%.1f)%s adaptation=%.3f target=%.3f glare=%s\n",
-                   (long long)current->index, current->time_s, report.gaze_x, report.gaze_y,
-                   report.eye_closed ? " closed" : "", report.adaptation_log, report.target_log,
-                   report.glare_ran ? "ran" : "skipped (nothing above the display peak)");
+    for (size_t i = 0, v = 0; report && i < renderer.panels(); ++i)
+      if (renderer.spec(i).viewer) report->add(current->index, current->time_s, v++, renderer.report(i));
+    if (!s.state_exr.empty() && current->index == s.state_frame) renderer.eye(main).retina().write_state(s.state_exr);
+    summary.nonfinite_pixels += main_report.nonfinite_pixels;
+    if (s.verbose) log_frame(*current, main_report);
     ++summary.frames;
     progress.frame_done();
     current = std::move(next);
   }
   sink->finish();
-  if (report_writer) report_writer->finish();
+  if (report) report->finish();
   progress.finish();
   summary.wall_s = progress.elapsed_s();
-  summary.final_adaptation_log = eye.adaptation_log();
+  summary.final_adaptation_log = renderer.eye(main).adaptation_log();
   return summary;
 }
 

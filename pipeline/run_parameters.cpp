@@ -132,6 +132,19 @@ ParamSet run_parameters(Settings& s) {
                &s.report));
   set.add(number("veil-exclusion", "deg", "light this close to the gaze does not count as veil", rep,
                  &s.veil_exclusion_deg, 0, 30));
+  set.add(text("target", "X,Y,W,H: the visibility target in frame pixels; the report gives its contrast", rep,
+               &s.target_rect));
+  set.add(text("target-mask", "the target as a mask image, or a numbered sequence or folder of one per frame", rep,
+               &s.target_mask));
+  // Preview.
+  const std::string pre = "Preview";
+  set.add(text("viewers", "viewers side by side: ages (25,70) or viewer JSON files (young.json,old.json)", pre,
+               &s.viewers));
+  set.add(flag("side-by-side", "put the input through a plain tone curve beside the simulation", pre,
+               &s.side_by_side));
+  set.add(flag("labels", "burn in panel labels (always with several panels)", pre, &s.labels));
+  set.add(flag("gaze-overlay", "burn in a marker at the gaze, hidden during blinks", pre, &s.gaze_overlay));
+  set.add(flag("timecode", "burn in the frame number and time", pre, &s.timecode));
   // Program.
   set.add(choice("quality", "preset: reference (exact, slow), balanced, fast; single options override it", prog,
                  &s.quality, {"reference", "balanced", "fast"}));

@@ -71,8 +71,17 @@ struct Settings {
   retina::EncodingParams encoding;
 
   // Report.
-  std::string report;               // per-frame CSV; a JSON summary goes beside it
+  std::string report;               // per-frame CSV; a JSON summary and PNG charts go beside it
   double veil_exclusion_deg = 1.0;  // light within this angle of the gaze is not counted as veil
+  std::string target_rect;          // X,Y,W,H of the visibility target (target_region.hpp)
+  std::string target_mask;          // or its mask image, sequence or folder
+
+  // Preview (preview.hpp, viewer_panels.hpp).
+  std::string viewers;        // comma-separated ages or viewer JSON files, rendered side by side
+  bool side_by_side = false;  // a plain tone-curve panel of the input before the simulated ones
+  bool labels = false;        // panel labels (always on with several panels)
+  bool gaze_overlay = false;  // a marker at the gaze, hidden during blinks
+  bool timecode = false;      // frame number and time
 
   // Program.
   std::string quality = "balanced";  // a named bundle of the knobs above (quality_presets.hpp)

@@ -45,4 +45,21 @@ cv::Vec3f with_luminance(const cv::Vec3f& tint, float luminance) {
   return tint * (luminance / y);
 }
 
+cv::Mat paint_rect(cv::Mat& frame, double x0, double y0, double x1, double y1, const cv::Vec3f& rgb) {
+  cv::Mat mask = cv::Mat::zeros(frame.size(), CV_8U);
+  const int u0 = std::max(0, int(std::floor(x0))), u1 = std::min(frame.cols, int(std::ceil(x1)));
+  const int v0 = std::max(0, int(std::floor(y0))), v1 = std::min(frame.rows, int(std::ceil(y1)));
+  for (int v = v0; v < v1; ++v) {
+    const double cy = std::min<double>(v + 1, y1) - std::max<double>(v, y0);
+    for (int u = u0; u < u1; ++u) {
+      const double cover = cy * (std::min<double>(u + 1, x1) - std::max<double>(u, x0));
+      if (cover <= 0) continue;
+      cv::Vec3f& p = frame.at<cv::Vec3f>(v, u);
+      p = p * float(1.0 - cover) + rgb * float(cover);
+      if (cover >= 0.5) mask.at<unsigned char>(v, u) = 255;
+    }
+  }
+  return mask;
+}
+
 }  // namespace eyestream::samples

@@ -13,6 +13,12 @@ namespace eyestream::samples {
 // bilinearly at the centre; larger ones are supersampled 8x8 per pixel.
 void add_disc(cv::Mat& frame, double x, double y, double radius_px, const cv::Vec3f& rgb);
 
+// Paints an opaque rectangle [x0, x1) x [y0, y1) (pixels, fractional) of
+// luminance `rgb` over the frame, each pixel blended by the fraction of it
+// covered. Returns the mask (CV_8U, 255) of the pixels at least half
+// covered.
+cv::Mat paint_rect(cv::Mat& frame, double x0, double y0, double x1, double y1, const cv::Vec3f& rgb);
+
 // A colour of luminance `luminance` (cd/m^2) with chromaticity given by
 // the linear Rec.709 ratio `tint` (any scale).
 cv::Vec3f with_luminance(const cv::Vec3f& tint, float luminance);

@@ -30,8 +30,10 @@ void generate_headlights(const SceneOptions& o) {
              cv::Vec3f::all(float(lamp)));
   SceneWriter writer(o.out_dir, o.fps, lamp / 1000.0);
   const int frames = std::max(1, int(std::lround(duration * o.fps)));
-  for (int i = 0; i < frames; ++i) writer.add_frame(frame);
   const cv::Rect t = headlights_target(frame.size());
+  cv::Mat mask = cv::Mat::zeros(frame.size(), CV_8U);
+  mask(t).setTo(255);
+  for (int i = 0; i < frames; ++i) writer.add_frame(frame, mask);
   writer.finish(fixed_gaze(t.x + t.width / 2.0, t.y + t.height / 2.0, duration, 60.0));
 }
 

@@ -4,6 +4,7 @@
 #include "samples/flash.hpp"
 #include "samples/headlights.hpp"
 #include "samples/night_drive.hpp"
+#include "samples/night_drive_long.hpp"
 #include "samples/scene.hpp"
 
 namespace eyestream::samples {
@@ -14,6 +15,11 @@ const std::vector<Scene>& scenes() {
        "a night road with street lamps and an oncoming car whose headlights grow from distant points to 1e5 "
        "cd/m^2; the gaze follows the road, glances at the headlights and blinks once",
        kNightDriveDuration_s, generate_night_drive},
+      {"night-drive-long",
+       "20 s on the night road: an oncoming car closing from 450 m to 12 m (headlight illuminance at the eye 0.025 "
+       "to 35 lx), a pedestrian on the verge (target masks in DIR/target), the gaze moving between road, pedestrian "
+       "and headlights with five blinks",
+       kNightDriveLongDuration_s, generate_night_drive_long},
       {"flash",
        "a 1/8 s neutral flash (--luminance, default 1e7 cd/m^2) of 2 deg radius on black at 0.5 s, then darkness; "
        "gaze fixed on it: bleaching afterimages and the flight of colours",
@@ -28,7 +34,8 @@ const std::vector<Scene>& scenes() {
        kDuskDuration_s, generate_dusk},
       {"headlights",
        "a still night view: two 1e5 cd/m^2 headlights (--luminance) 1.4 deg apart on a 0.3 cd/m^2 road and a "
-       "0.6 cd/m^2 pedestrian 4 deg to their left, gaze on the pedestrian: glare and visibility",
+       "0.6 cd/m^2 pedestrian 4 deg to their left (target masks in DIR/target), gaze on the pedestrian: glare and "
+       "visibility",
        kHeadlightsDuration_s, generate_headlights},
   };
   return all;

@@ -1,6 +1,7 @@
 #include "samples/scene_writer.hpp"
 
 #include <filesystem>
+#include <opencv2/imgcodecs.hpp>
 
 #include "io/exr_file.hpp"
 #include "io/frame_sequence.hpp"
@@ -11,12 +12,18 @@ namespace eyestream::samples {
 SceneWriter::SceneWriter(const std::string& out_dir, double fps, double white)
     : dir_(out_dir), fps_(fps), white_(white) {}
 
-void SceneWriter::add_frame(const cv::Mat& rgb) {
-  const std::string path = io::format_pattern(dir_ + "/frames/%05d.exr", std::int64_t(files_.size()));
-  io::StagedFile file(path);
+void SceneWriter::add_frame(const cv::Mat& rgb, const cv::Mat& target_mask) {
+  const std::int64_t index = frames_++;
+  io::StagedFile file(io::format_pattern(dir_ + "/frames/%05d.exr", index));
   cv::Mat scaled = rgb * (1.0 / white_);
   io::write_exr(file.temp_path().string(), scaled, io::ExrWriteOptions{true, white_, fps_});
   files_.push_back(std::move(file));
+  if (target_mask.empty()) return;
+  std::vector<unsigned char> png;
+  cv::imencode(".png", target_mask, png);
+  io::StagedFile mask(io::format_pattern(dir_ + "/target/%05d.png", index));
+  io::write_all(mask, png);
+  files_.push_back(std::move(mask));
 }
 
 void SceneWriter::finish(const std::vector<io::GazeSample>& gaze) {

@@ -21,7 +21,7 @@ struct Viewer {
     info.width = kW;
     info.height = kH;
     info.frames_per_second = kFps;
-    return compile_plan(s, info, io::SinkNeeds::kLinear);
+    return compile_plan(s, info);
   }
   // Shows `rgb` for one frame interval with the gaze at (x, y).
   cv::Mat see(const cv::Mat& rgb, double x = kW / 2.0, double y = kH / 2.0, bool closed = false) {

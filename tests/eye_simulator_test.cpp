@@ -26,7 +26,7 @@ Plan test_plan() {
   info.width = kW;
   info.height = kH;
   info.frames_per_second = kFps;
-  return compile_plan(no_glare(), info, io::SinkNeeds::kLinear);
+  return compile_plan(no_glare(), info);
 }
 
 cv::Scalar mean_rgb(EyeSimulator& eye, float luminance, int index, bool closed = false) {
@@ -80,7 +80,7 @@ TEST(EyeSimulator, ClosedEyesSeeDarknessAndAdaptTowardIt) {
   info.width = kW;
   info.height = kH;
   info.frames_per_second = kFps;
-  EyeSimulator without(compile_plan(plain, info, io::SinkNeeds::kLinear)), with(test_plan());
+  EyeSimulator without(compile_plan(plain, info)), with(test_plan());
   mean_output(without, 10.0f, 0);
   mean_output(with, 10.0f, 0);
   EXPECT_EQ(mean_output(without, 10.0f, 1, true), 0.0);

@@ -1,6 +1,7 @@
 // The disability-glare report (driving-simulator previews).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -8,6 +9,7 @@
 
 #include "glare/veiling_luminance.hpp"
 #include "glare/vos_psf.hpp"
+#include "pipeline/report_writer.hpp"
 #include "tests/test_support.hpp"
 
 namespace eyestream {
@@ -73,27 +75,77 @@ std::vector<std::string> lines_of(const std::string& path) {
   return lines;
 }
 
+// Writes the headlights sample (160x90) to DIR/h and runs it with `options`.
+void run_headlights(const test::ScratchDir& dir, double duration_s, const std::string& options) {
+  if (!std::filesystem::exists(dir / "h")) {
+    ASSERT_EQ(test::run_eyestream("sample headlights -o " + (dir / "h") + " --width 160 --height 90 --duration " +
+                                  std::to_string(duration_s))
+                  .exit_code,
+              0);
+  }
+  const auto r =
+      test::run_eyestream("run -i " + (dir / "h/frames") + " -g " + (dir / "h/gaze.csv") + " " + options);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+}
+
 TEST(Report, OneDocumentedRowPerFrameAndASummary) {
   test::ScratchDir dir;
-  ASSERT_EQ(
-      test::run_eyestream("sample headlights -o " + (dir / "h") + " --width 160 --height 90 --duration 0.5").exit_code,
-      0);
-  const std::string in = "-i " + (dir / "h/frames/%05d.exr") + " -g " + (dir / "h/gaze.csv");
-  for (const char* age : {"25", "75"}) {
-    const auto r = test::run_eyestream("run " + in + " -o " + (dir / (std::string(age) + ".mp4")) + " --viewer-age " +
-                                       age + " --report " + (dir / (std::string("r") + age + ".csv")));
-    ASSERT_EQ(r.exit_code, 0) << r.output;
-  }
+  for (const std::string age : {"25", "75"})
+    run_headlights(dir, 0.5, "-o " + (dir / (age + ".mp4")) + " --viewer-age " + age + " --report " +
+                                 (dir / ("r" + age + ".csv")));
   const std::vector<std::string> rows = lines_of(dir / "r25.csv");
   ASSERT_EQ(rows.size(), 16u) << "a header and one row per frame (15 frames)";
-  EXPECT_EQ(rows[0],
-            "frame,time_s,gaze_x,gaze_y,eye,adaptation_cd_m2,pupil_mm,peak_cd_m2,glare,veil_cd_m2,ti_percent,ti_valid");
+  EXPECT_EQ(rows[0], pipeline::kReportColumns);
+  EXPECT_EQ(rows[1].substr(0, 11), "0,0,age 25,");
   std::ifstream json_in(dir / "r25.json");
   const nlohmann::json summary = nlohmann::json::parse(json_in);
   EXPECT_EQ(summary["frames"], 15);
   std::ifstream old_in(dir / "r75.json");
   const nlohmann::json old = nlohmann::json::parse(old_in);
-  EXPECT_GT(old["veil_cd_m2"]["max"].get<double>(), summary["veil_cd_m2"]["max"].get<double>());
+  EXPECT_GT(old["viewers"][0]["veil_cd_m2"]["max"].get<double>(),
+            summary["viewers"][0]["veil_cd_m2"]["max"].get<double>());
+  EXPECT_TRUE(std::filesystem::is_regular_file(dir / "r25.png")) << "charts beside the report";
+}
+
+// Splits a CSV row into fields (empty fields kept).
+std::vector<std::string> fields(const std::string& row) {
+  std::vector<std::string> out;
+  std::stringstream in(row);
+  for (std::string f; std::getline(in, f, ',');) out.push_back(f);
+  if (!row.empty() && row.back() == ',') out.push_back("");
+  return out;
+}
+
+// The headlights scene's pedestrian (0.6 cd/m^2 on a 0.3 cd/m^2 road) has
+// contrast 1; the veil at the target lowers it to (L_t - L_b) / (L_b + L_v),
+// more for the older viewer. Two viewers give two rows per frame.
+TEST(Report, TargetContrastWithAndWithoutTheVeilPerViewer) {
+  test::ScratchDir dir;
+  run_headlights(dir, 0.2, "-o " + (dir / "out/%05d.png") + " --viewers 25,75 --report " + (dir / "r.csv") +
+                               " --target-mask " + (dir / "h/target"));
+  const std::vector<std::string> rows = lines_of(dir / "r.csv");
+  ASSERT_EQ(rows.size(), 1u + 2u * 6u) << "a row per frame and viewer";
+  const std::vector<std::string> header = fields(rows[0]);
+  auto col = [&](const char* name) { return std::find(header.begin(), header.end(), name) - header.begin(); };
+  double veiled[2] = {0, 0};
+  for (int v = 0; v < 2; ++v) {
+    const std::vector<std::string> f = fields(rows[1 + v]);
+    ASSERT_EQ(f.size(), header.size());
+    EXPECT_EQ(f[col("viewer")], v == 0 ? "age 25" : "age 75");
+    const double lt = std::stod(f[col("target_cd_m2")]), lb = std::stod(f[col("background_cd_m2")]);
+    const double lv = std::stod(f[col("target_veil_cd_m2")]);
+    EXPECT_NEAR(lt, 0.6, 0.6 * 1e-3);
+    EXPECT_NEAR(lb, 0.3, 0.3 * 1e-3);
+    EXPECT_NEAR(std::stod(f[col("contrast")]), 1.0, 2e-3);
+    EXPECT_GT(lv, 0.0);
+    veiled[v] = std::stod(f[col("contrast_veiled")]);
+    EXPECT_NEAR(veiled[v], (lt - lb) / (lb + lv), 1e-4);
+  }
+  EXPECT_LT(veiled[1], veiled[0]) << "the older eye's veil hides the pedestrian more";
+  std::ifstream json_in(dir / "r.json");
+  const nlohmann::json summary = nlohmann::json::parse(json_in);
+  ASSERT_EQ(summary["viewers"].size(), 2u);
+  EXPECT_EQ(summary["viewers"][1]["frames_with_target"], 6);
 }
 
 }  // namespace

@@ -58,7 +58,7 @@ pipeline::Plan plan_for(const pipeline::Settings& settings, int width, int heigh
   info.width = width;
   info.height = height;
   info.frames_per_second = fps;
-  return pipeline::compile_plan(settings, info, io::SinkNeeds::kLinear);
+  return pipeline::compile_plan(settings, info);
 }
 
 cv::Mat constant_frame(int width, int height, const cv::Vec3f& rgb) {
