@@ -6,6 +6,8 @@
 #include <string>
 
 #include "io/error.hpp"
+#include "io/frame_sequence.hpp"
+#include "pipeline/compare_command.hpp"
 #include "pipeline/curves_command.hpp"
 #include "pipeline/exit_codes.hpp"
 #include "pipeline/parameter.hpp"
@@ -91,6 +93,27 @@ int main(int argc, char** argv) {
   report_cmd->add_option("csv", report_csv, "the report CSV of `eyestream run --report`")->required();
   report_cmd->add_option("-o,--output", report_png, "PNG file (default: the CSV's name with .png)");
 
+  CompareOptions cmp;
+  CLI::App* compare_cmd = app.add_subcommand(
+      "compare", "compare two outputs frame by frame (PNG/EXR sequences or videos); exit 0 pass, 1 warn, 2 fail");
+  compare_cmd->add_option("a", cmp.a, "the reference: a PNG or EXR sequence (pattern, folder, file) or a video")
+      ->required();
+  compare_cmd->add_option("b", cmp.b, "the output to judge, of the same kind")->required();
+  compare_cmd->add_option("--metric", cmp.metric, "what --warn and --fail judge, on the worst frame")
+      ->check(CLI::IsMember({"de99", "demax", "max", "mean", "psnr"}))
+      ->capture_default_str();
+  compare_cmd->add_option("--warn", cmp.warn, "warn beyond this (psnr: below it)")->capture_default_str();
+  compare_cmd->add_option("--fail", cmp.fail, "fail beyond this (psnr: below it)")->capture_default_str();
+  compare_cmd->add_option("--de-threshold", cmp.de_threshold, "count pixels whose CIEDE2000 exceeds this")
+      ->check(CLI::Range(0.0, 100.0))
+      ->capture_default_str();
+  compare_cmd->add_option("--diff-out", cmp.diff_out, "CIEDE2000 heat maps: a PNG pattern (diff/%05d.png)");
+  compare_cmd->add_option("--diff-scale", cmp.diff_scale, "CIEDE2000 at full scale in the heat maps")
+      ->check(CLI::Range(0.01, 100.0))
+      ->capture_default_str();
+  compare_cmd->add_option("--json", cmp.json, "write per-frame and overall metrics here");
+  compare_cmd->add_flag("--verbose", cmp.verbose, "a line per frame");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -119,6 +142,12 @@ int main(int argc, char** argv) {
     } else if (*psf_cmd) {
       psf_params.apply("");
       std::printf("%s", write_psf(psf_settings, psf).text().c_str());
+    } else if (*compare_cmd) {
+      if (!cmp.diff_out.empty() && !io::is_printf_pattern(cmp.diff_out))
+        throw UsageError("--diff-out '" + cmp.diff_out + "': expected a printf pattern such as diff/%05d.png");
+      const CompareResult r = compare(cmp);
+      std::printf("%s", r.text.c_str());
+      return r.exit_code;
     } else if (*report_cmd) {
       if (report_png.empty()) report_png = std::filesystem::path(report_csv).replace_extension(".png").string();
       draw_report_file(report_csv, report_png);

@@ -1,0 +1,81 @@
+#include "io/display_sequence.hpp"
+
+#include <filesystem>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "io/error.hpp"
+#include "io/exr_file.hpp"
+#include "io/staged_file.hpp"
+
+namespace eyestream::io {
+
+namespace {
+
+const std::vector<std::string> kImageExtensions = {".png", ".exr", ".tif", ".tiff"};
+
+bool is_image_path(const std::string& path) {
+  if (std::filesystem::is_directory(path)) return true;
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  for (const std::string& e : kImageExtensions)
+    if (ext == e) return true;
+  return false;
+}
+
+bool is_exr(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".exr";
+}
+
+cv::Mat read_code_image(const std::string& path) {
+  const cv::Mat img = cv::imread(path, cv::IMREAD_UNCHANGED);
+  if (img.empty()) throw InputError(path + ": cannot read the image");
+  if (img.depth() != CV_8U && img.depth() != CV_16U) throw InputError(path + ": expected 8- or 16-bit RGB");
+  cv::Mat rgb;
+  switch (img.channels()) {
+    case 1: cv::cvtColor(img, rgb, cv::COLOR_GRAY2RGB); break;
+    case 3: cv::cvtColor(img, rgb, cv::COLOR_BGR2RGB); break;
+    case 4: cv::cvtColor(img, rgb, cv::COLOR_BGRA2RGB); break;
+    default: throw InputError(path + ": unsupported channel count");
+  }
+  cv::Mat out;
+  rgb.convertTo(out, CV_32FC3, img.depth() == CV_8U ? 1.0 / 255.0 : 1.0 / 65535.0);
+  return out;
+}
+
+}  // namespace
+
+DisplaySequence::DisplaySequence(const std::string& path) : path_(path) {
+  if (is_image_path(path)) {
+    files_ = list_sequence(path, kImageExtensions, false);
+    linear_ = is_exr(files_.front().path);
+    for (const SequenceEntry& e : files_) {
+      protect_input(e.path);
+      if (is_exr(e.path) != linear_) throw InputError(path + ": mixes EXR and other images");
+    }
+  } else {
+    if (!std::filesystem::is_regular_file(path)) throw InputError(path + ": no such file");
+    protect_input(path);
+    video_ = std::make_unique<VideoReader>(path);
+  }
+}
+
+std::int64_t DisplaySequence::frame_count() const {
+  return video_ ? video_->frame_count() : std::int64_t(files_.size());
+}
+
+std::optional<DisplayImage> DisplaySequence::next() {
+  if (video_) {
+    std::optional<VideoFrame> f = video_->next();
+    if (!f) return std::nullopt;
+    return DisplayImage{f->rgb, path_ + " frame " + std::to_string(f->index)};
+  }
+  if (position_ >= files_.size()) return std::nullopt;
+  const std::string& file = files_[position_++].path;
+  if (linear_) return DisplayImage{read_exr(file, 400'000'000).rgb, file};
+  return DisplayImage{read_code_image(file), file};
+}
+
+}  // namespace eyestream::io

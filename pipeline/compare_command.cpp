@@ -1,0 +1,189 @@
+#include "pipeline/compare_command.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "io/display_sequence.hpp"
+#include "io/error.hpp"
+#include "io/frame_sequence.hpp"
+#include "io/staged_file.hpp"
+#include "retina/colour_difference.hpp"
+
+namespace eyestream::pipeline {
+
+namespace {
+
+constexpr double kDisplayGamma = 2.2;  // decodes display code values (eyestream encodes with 1/2.2)
+constexpr double kHistogramStep = 0.01, kHistogramTop = 100.0;
+
+struct FrameMetrics {
+  double max_abs = 0, mean_abs = 0, psnr = 0, de_p99 = 0, de_max = 0, frac_over = 0;
+};
+
+cv::Vec3f to_linear(const cv::Vec3f& v, bool linear) {
+  if (linear) return v;
+  cv::Vec3f out;
+  for (int c = 0; c < 3; ++c) out[c] = float(std::pow(std::max(v[c], 0.0f), kDisplayGamma));
+  return out;
+}
+
+// Per-pixel CIEDE2000 (CV_32F) and the frame's metrics; rows in parallel,
+// each pixel written once, so the result does not depend on threads.
+FrameMetrics measure(const cv::Mat& a, const cv::Mat& b, bool linear, double de_threshold, cv::Mat& de) {
+  de.create(a.size(), CV_32F);
+  cv::parallel_for_(cv::Range(0, a.rows), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      const cv::Vec3f* pa = a.ptr<cv::Vec3f>(y);
+      const cv::Vec3f* pb = b.ptr<cv::Vec3f>(y);
+      float* out = de.ptr<float>(y);
+      for (int x = 0; x < a.cols; ++x)
+        out[x] = float(retina::ciede2000(retina::lab_from_linear_rec709(to_linear(pa[x], linear)),
+                                         retina::lab_from_linear_rec709(to_linear(pb[x], linear))));
+    }
+  });
+  FrameMetrics m;
+  const cv::Mat diff = cv::abs(a - b);
+  cv::minMaxLoc(diff.reshape(1), nullptr, &m.max_abs);
+  const cv::Scalar mean = cv::mean(diff);
+  m.mean_abs = (mean[0] + mean[1] + mean[2]) / 3;
+  const double mse = cv::mean(diff.mul(diff)).dot(cv::Scalar(1, 1, 1, 0)) / 3;
+  m.psnr = mse > 0 ? 10 * std::log10(1.0 / mse) : std::numeric_limits<double>::infinity();
+  std::vector<float> values(de.begin<float>(), de.end<float>());
+  const size_t k = std::min(values.size() - 1, size_t(std::ceil(0.99 * values.size())) - 1);
+  std::nth_element(values.begin(), values.begin() + k, values.end());
+  m.de_p99 = values[k];
+  cv::minMaxLoc(de, nullptr, &m.de_max);
+  m.frac_over = double(cv::countNonZero(de > de_threshold)) / double(de.total());
+  return m;
+}
+
+double judged(const FrameMetrics& m, const std::string& metric) {
+  if (metric == "de99") return m.de_p99;
+  if (metric == "demax") return m.de_max;
+  if (metric == "max") return m.max_abs;
+  if (metric == "mean") return m.mean_abs;
+  return m.psnr;
+}
+
+// True when `value` is beyond `limit` for this metric (PSNR: below it).
+bool beyond(double value, double limit, const std::string& metric) {
+  return metric == "psnr" ? value < limit : value > limit;
+}
+
+nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+nlohmann::json to_json(const FrameMetrics& m) {
+  return {{"max_abs", m.max_abs}, {"mean_abs", m.mean_abs}, {"psnr_db", number_or_null(m.psnr)},
+          {"de2000_p99", m.de_p99}, {"de2000_max", m.de_max}, {"fraction_over_threshold", m.frac_over}};
+}
+
+std::string format_metrics(const FrameMetrics& m) {
+  char buf[256];
+  std::snprintf(buf, sizeof(buf), "max abs %.6g, mean abs %.3g, PSNR %.2f dB, p99 dE00 %.3f, max dE00 %.3f, %.4g%% over",
+                m.max_abs, m.mean_abs, m.psnr, m.de_p99, m.de_max, 100 * m.frac_over);
+  return buf;
+}
+
+// A CIEDE2000 heat map: black at 0, full scale at `scale`.
+cv::Mat heat_map(const cv::Mat& de, double scale) {
+  cv::Mat grey, colour;
+  de.convertTo(grey, CV_8U, 255.0 / scale);
+  cv::applyColorMap(grey, colour, cv::COLORMAP_INFERNO);
+  return colour;
+}
+
+}  // namespace
+
+CompareResult compare(const CompareOptions& o) {
+  io::DisplaySequence a(o.a), b(o.b);
+  CompareResult result;
+  std::vector<io::StagedFile> diffs;
+  nlohmann::json frames = nlohmann::json::array();
+  FrameMetrics overall;
+  overall.psnr = std::numeric_limits<double>::infinity();
+  std::vector<std::uint64_t> histogram(size_t(kHistogramTop / kHistogramStep) + 1, 0);
+  std::uint64_t pixels = 0, over = 0;
+  double worst = o.metric == "psnr" ? std::numeric_limits<double>::infinity() : 0.0;
+  std::int64_t worst_frame = 0, count = 0;
+  std::string mismatch;
+  if (a.linear() != b.linear()) mismatch = "A holds " + std::string(a.linear() ? "linear EXR" : "display-coded") +
+                                           " frames and B " + (b.linear() ? "linear EXR" : "display-coded") + " ones";
+  if (mismatch.empty() && a.frame_count() >= 0 && b.frame_count() >= 0 && a.frame_count() != b.frame_count())
+    mismatch = "A has " + std::to_string(a.frame_count()) + " frames, B " + std::to_string(b.frame_count());
+  while (mismatch.empty()) {
+    std::optional<io::DisplayImage> fa = a.next(), fb = b.next();
+    if (!fa && !fb) break;
+    if (!fa || !fb) {
+      mismatch = std::string(fa ? "B" : "A") + " ends after " + std::to_string(count) + " frames, the other goes on";
+      break;
+    }
+    if (fa->rgb.size() != fb->rgb.size()) {
+      mismatch = fa->name + " is " + std::to_string(fa->rgb.cols) + "x" + std::to_string(fa->rgb.rows) + " but " +
+                 fb->name + " is " + std::to_string(fb->rgb.cols) + "x" + std::to_string(fb->rgb.rows);
+      break;
+    }
+    cv::Mat de;
+    const FrameMetrics m = measure(fa->rgb, fb->rgb, a.linear(), o.de_threshold, de);
+    for (auto it = de.begin<float>(); it != de.end<float>(); ++it)
+      ++histogram[std::min(histogram.size() - 1, size_t(*it / kHistogramStep))];
+    pixels += de.total();
+    over += std::uint64_t(std::llround(m.frac_over * double(de.total())));
+    overall.max_abs = std::max(overall.max_abs, m.max_abs);
+    overall.mean_abs += m.mean_abs;
+    overall.psnr = std::min(overall.psnr, m.psnr);
+    overall.de_max = std::max(overall.de_max, m.de_max);
+    const double v = judged(m, o.metric);
+    if (count == 0 || beyond(v, worst, o.metric)) worst = v, worst_frame = count;
+    frames.push_back(to_json(m));
+    frames.back()["frame"] = count;
+    if (o.verbose) result.text += "frame " + std::to_string(count) + ": " + format_metrics(m) + "\n";
+    if (!o.diff_out.empty()) {
+      std::vector<unsigned char> png;
+      cv::imencode(".png", heat_map(de, o.diff_scale), png);
+      diffs.emplace_back(io::format_pattern(o.diff_out, count));
+      io::write_all(diffs.back(), png);
+    }
+    ++count;
+  }
+  if (count > 0) {
+    overall.mean_abs /= double(count);
+    std::uint64_t seen = 0;
+    const std::uint64_t target = std::uint64_t(std::ceil(0.99 * double(pixels)));
+    for (size_t i = 0; i < histogram.size(); ++i)
+      if ((seen += histogram[i]) >= target) {
+        overall.de_p99 = i * kHistogramStep;  // rounded down to the bin
+        break;
+      }
+    overall.frac_over = double(over) / double(pixels);
+  }
+  std::string verdict = "pass";
+  if (!mismatch.empty()) verdict = "fail";
+  else if (count > 0 && beyond(worst, o.fail, o.metric)) verdict = "fail";
+  else if (count > 0 && beyond(worst, o.warn, o.metric)) verdict = "warn";
+  result.exit_code = verdict == "pass" ? 0 : verdict == "warn" ? 1 : 2;
+  char line[160];
+  std::snprintf(line, sizeof(line), "; %s of the worst frame (%lld) %.6g against warn %.6g, fail %.6g: %s",
+                o.metric.c_str(), (long long)worst_frame, worst, o.warn, o.fail, verdict.c_str());
+  result.text += "compare: " + std::to_string(count) + " frames; " + format_metrics(overall) +
+                 " (overall p99 rounded down to 0.01)" + (count > 0 ? std::string(line) : "; " + verdict) +
+                 (mismatch.empty() ? "" : "\ncompare: fail: " + mismatch) + "\n";
+  if (!o.json.empty()) {
+    nlohmann::json report = {{"a", o.a},          {"b", o.b},         {"metric", o.metric}, {"warn", o.warn},
+                              {"fail", o.fail},    {"frames", frames}, {"overall", to_json(overall)},
+                              {"result", verdict}, {"worst_frame", worst_frame}};
+    if (!mismatch.empty()) report["mismatch"] = mismatch;
+    const std::string text = report.dump(2) + "\n";
+    io::StagedFile file(o.json);
+    io::write_all(file, std::vector<unsigned char>(text.begin(), text.end()));
+    file.commit();
+  }
+  for (io::StagedFile& f : diffs) f.commit();
+  return result;
+}
+
+}  // namespace eyestream::pipeline
