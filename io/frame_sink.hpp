@@ -10,6 +10,7 @@ enum class SinkNeeds {
   kLinear,  // DisplayFrame::linear (float, before encoding and dithering)
   kCode8,   // DisplayFrame::code, CV_8UC3
   kCode16,  // DisplayFrame::code, CV_16UC3
+  kPq16,    // DisplayFrame::code, CV_16UC3: PQ-encoded BT.2020 (HDR10)
 };
 
 // A sink writes frames under temporary names; finish() finalises them and

@@ -14,8 +14,8 @@ namespace {
 std::string lower_extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  if (ext != ".mp4" && ext != ".png" && ext != ".exr")
-    throw UsageError("-o " + path + ": unknown output kind (use .mp4, .png or .exr)");
+  if (ext != ".mp4" && ext != ".mkv" && ext != ".png" && ext != ".exr")
+    throw UsageError("-o " + path + ": unknown output kind (use .mp4, .mkv, .png or .exr)");
   return ext;
 }
 
@@ -23,7 +23,7 @@ std::string lower_extension(const std::string& path) {
 
 std::unique_ptr<FrameSink> make_sink(const std::string& path, const SinkOptions& options) {
   const std::string ext = lower_extension(path);
-  if (ext == ".mp4") return std::make_unique<VideoWriter>(path, options.video);
+  if (ext == ".mp4" || ext == ".mkv") return std::make_unique<VideoWriter>(path, options.video);
   if (ext == ".png")
     return std::make_unique<ImageSequenceSink>(path, options.png_bits == 16 ? ImageFormat::kPng16 : ImageFormat::kPng8);
   return std::make_unique<ImageSequenceSink>(path, ImageFormat::kExr);
@@ -32,6 +32,8 @@ std::unique_ptr<FrameSink> make_sink(const std::string& path, const SinkOptions&
 SinkNeeds sink_needs(const std::string& path, const SinkOptions& options) {
   const std::string ext = lower_extension(path);
   if (ext == ".exr") return SinkNeeds::kLinear;
+  if (ext == ".mp4" || ext == ".mkv")
+    return VideoWriter::needs_for(options.video);
   return ext == ".png" && options.png_bits == 16 ? SinkNeeds::kCode16 : SinkNeeds::kCode8;
 }
 

@@ -14,7 +14,7 @@ struct SinkOptions {
   int png_bits = 8;  // 8 or 16
 };
 
-// .mp4 -> H.264 video; .png -> PNG sequence; .exr -> EXR sequence. Any other
+// .mp4/.mkv -> video; .png -> PNG sequence; .exr -> EXR sequence. Any other
 // extension is a UsageError naming the path.
 std::unique_ptr<FrameSink> make_sink(const std::string& path, const SinkOptions& options);
 

@@ -5,6 +5,7 @@ extern "C" {
 #include <libavformat/avformat.h>
 #include <libavutil/error.h>
 #include <libavutil/imgutils.h>
+#include <libavutil/mastering_display_metadata.h>
 #include <libavutil/opt.h>
 #include <libswscale/swscale.h>
 }
@@ -62,56 +63,100 @@ struct VideoWriter::Impl {
     height = frame_height + (frame_height & 1);
     rate = av_d2q(options.frames_per_second, 1 << 20);
     const std::string temp = file.temp_path().string();
-    int rc = avformat_alloc_output_context2(&format, nullptr, "mp4", temp.c_str());
-    if (rc < 0) fail("cannot set up MP4 output", rc);
-    const AVCodec* encoder = avcodec_find_encoder_by_name("libx264");
-    if (!encoder) throw OutputError(file.final_path().string() + ": this FFmpeg build has no libx264 encoder");
+    const bool mkv = file.final_path().extension() == ".mkv" || file.final_path().extension() == ".MKV";
+    int rc = avformat_alloc_output_context2(&format, nullptr, mkv ? "matroska" : "mp4", temp.c_str());
+    if (rc < 0) fail("cannot set up the container", rc);
+    const char* encoder_name = options.codec == "hevc" ? "libx265" : "libx264";
+    const AVCodec* encoder = avcodec_find_encoder_by_name(encoder_name);
+    if (!encoder)
+      throw OutputError(file.final_path().string() + ": this FFmpeg build has no " + encoder_name + " encoder");
     stream = avformat_new_stream(format, nullptr);
     codec = avcodec_alloc_context3(encoder);
     if (!stream || !codec) throw OutputError(file.final_path().string() + ": out of memory");
     codec->width = width;
     codec->height = height;
-    codec->pix_fmt = AV_PIX_FMT_YUV420P;
+    codec->pix_fmt = pixel_format();
     codec->time_base = av_inv_q(rate);
     codec->framerate = rate;
-    codec->color_primaries = AVCOL_PRI_BT709;
-    codec->color_trc = AVCOL_TRC_BT709;
-    codec->colorspace = AVCOL_SPC_BT709;
+    tag(codec->color_primaries, codec->color_trc, codec->colorspace);
     codec->color_range = AVCOL_RANGE_MPEG;
     codec->thread_count = options.encoder_threads;
     if (format->oformat->flags & AVFMT_GLOBALHEADER) codec->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
     AVDictionary* opts = nullptr;
     av_dict_set(&opts, "crf", std::to_string(options.crf).c_str(), 0);
     av_dict_set(&opts, "preset", options.preset.c_str(), 0);
+    if (options.codec == "hevc") av_dict_set(&opts, "x265-params", x265_params().c_str(), 0);
     rc = avcodec_open2(codec, encoder, &opts);
     av_dict_free(&opts);
-    if (rc < 0) fail("cannot open the H.264 encoder", rc);
+    if (rc < 0) fail(std::string("cannot open the ") + encoder_name + " encoder", rc);
     rc = avcodec_parameters_from_context(stream->codecpar, codec);
     if (rc < 0) fail("cannot set stream parameters", rc);
     stream->time_base = codec->time_base;
     stream->avg_frame_rate = rate;
     rc = avio_open(&format->pb, temp.c_str(), AVIO_FLAG_WRITE);
     if (rc < 0) fail("cannot open for writing", rc);
+    if (options.hdr10) add_hdr10_side_data();
     rc = avformat_write_header(format, nullptr);
-    if (rc < 0) fail("cannot write the MP4 header", rc);
+    if (rc < 0) fail("cannot write the container header", rc);
 
-    sws = sws_getContext(width, height, AV_PIX_FMT_RGB24, width, height, AV_PIX_FMT_YUV420P,
+    const AVPixelFormat rgb = options.bit_depth > 8 ? AV_PIX_FMT_RGB48LE : AV_PIX_FMT_RGB24;
+    sws = sws_getContext(width, height, rgb, width, height, pixel_format(),
                          SWS_BICUBIC | SWS_ACCURATE_RND | SWS_BITEXACT, nullptr, nullptr, nullptr);
     if (!sws) throw OutputError(file.final_path().string() + ": cannot set up colour conversion");
-    const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
-    sws_setColorspaceDetails(sws, bt709, 1, bt709, 0, 0, 1 << 16, 1 << 16);
+    const int* matrix = sws_getCoefficients(options.hdr10 || options.hlg ? SWS_CS_BT2020 : SWS_CS_ITU709);
+    sws_setColorspaceDetails(sws, matrix, 1, matrix, 0, 0, 1 << 16, 1 << 16);
     yuv = av_frame_alloc();
     packet = av_packet_alloc();
     if (!yuv || !packet) throw OutputError(file.final_path().string() + ": out of memory");
-    yuv->format = AV_PIX_FMT_YUV420P;
+    yuv->format = pixel_format();
     yuv->width = width;
     yuv->height = height;
-    yuv->color_primaries = AVCOL_PRI_BT709;
-    yuv->color_trc = AVCOL_TRC_BT709;
-    yuv->colorspace = AVCOL_SPC_BT709;
+    tag(yuv->color_primaries, yuv->color_trc, yuv->colorspace);
     yuv->color_range = AVCOL_RANGE_MPEG;
     rc = av_frame_get_buffer(yuv, 0);
     if (rc < 0) fail("cannot allocate a frame", rc);
+  }
+
+  AVPixelFormat pixel_format() const { return options.bit_depth > 8 ? AV_PIX_FMT_YUV420P10LE : AV_PIX_FMT_YUV420P; }
+
+  void tag(AVColorPrimaries& primaries, AVColorTransferCharacteristic& transfer, AVColorSpace& matrix) const {
+    const bool wide = options.hdr10 || options.hlg;
+    primaries = wide ? AVCOL_PRI_BT2020 : AVCOL_PRI_BT709;
+    transfer = options.hdr10 ? AVCOL_TRC_SMPTE2084 : options.hlg ? AVCOL_TRC_ARIB_STD_B67 : AVCOL_TRC_BT709;
+    matrix = wide ? AVCOL_SPC_BT2020_NCL : AVCOL_SPC_BT709;
+  }
+
+  // x265: quiet, fixed threading (output bytes depend on it), and for
+  // HDR10 the mastering display (BT.2020 primaries and D65 in 0.00002
+  // units, luminance in 0.0001 cd/m^2) and content light level in the SEI.
+  std::string x265_params() const {
+    std::string p = "log-level=error:frame-threads=1:pools=" + std::to_string(options.encoder_threads);
+    if (options.hdr10) {
+      const long peak = std::lround(options.hdr10_peak_cd_m2 * 10000);
+      p += ":hdr10=1:repeat-headers=1:master-display=G(8500,39850)B(6550,2300)R(35400,14600)WP(15635,16450)L(" +
+           std::to_string(peak) + ",1):max-cll=" + std::to_string(std::lround(options.hdr10_peak_cd_m2)) + ",0";
+    }
+    return p;
+  }
+
+  // The same metadata for the container.
+  void add_hdr10_side_data() {
+    size_t size = 0;
+    AVMasteringDisplayMetadata* m = av_mastering_display_metadata_alloc();
+    const double xy[4][2] = {{0.708, 0.292}, {0.170, 0.797}, {0.131, 0.046}, {0.3127, 0.3290}};  // R, G, B, white
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 2; ++j) m->display_primaries[i][j] = av_d2q(xy[i][j], 50000);
+    m->white_point[0] = av_d2q(xy[3][0], 50000);
+    m->white_point[1] = av_d2q(xy[3][1], 50000);
+    m->max_luminance = av_d2q(options.hdr10_peak_cd_m2, 10000);
+    m->min_luminance = av_make_q(1, 10000);
+    m->has_primaries = m->has_luminance = 1;
+    av_stream_add_side_data(stream, AV_PKT_DATA_MASTERING_DISPLAY_METADATA, reinterpret_cast<uint8_t*>(m),
+                            sizeof(*m));
+    AVContentLightMetadata* cll = av_content_light_metadata_alloc(&size);
+    cll->MaxCLL = unsigned(std::lround(options.hdr10_peak_cd_m2));
+    cll->MaxFALL = 0;
+    av_stream_add_side_data(stream, AV_PKT_DATA_CONTENT_LIGHT_LEVEL, reinterpret_cast<uint8_t*>(cll), size);
   }
 
   void drain() {
@@ -127,10 +172,10 @@ struct VideoWriter::Impl {
     }
   }
 
-  void encode(const cv::Mat& rgb8, double time_s) {
-    cv::Mat padded = rgb8;
-    if (rgb8.cols != width || rgb8.rows != height)
-      cv::copyMakeBorder(rgb8, padded, 0, height - rgb8.rows, 0, width - rgb8.cols, cv::BORDER_REPLICATE);
+  void encode(const cv::Mat& code, double time_s) {
+    cv::Mat padded = code;
+    if (code.cols != width || code.rows != height)
+      cv::copyMakeBorder(code, padded, 0, height - code.rows, 0, width - code.cols, cv::BORDER_REPLICATE);
     int rc = av_frame_make_writable(yuv);
     if (rc < 0) fail("cannot write a frame", rc);
     const uint8_t* src[1] = {padded.ptr<uint8_t>()};
@@ -151,22 +196,40 @@ struct VideoWriter::Impl {
     if (rc < 0) fail("encoding failed", rc);
     drain();
     rc = av_write_trailer(format);
-    if (rc < 0) fail("cannot finalise the MP4 file", rc);
+    if (rc < 0) fail("cannot finalise the video file", rc);
     rc = avio_closep(&format->pb);
     if (rc < 0) fail("cannot close (disk full?)", rc);
     file.commit();
   }
 };
 
+namespace {
+
+VideoOptions resolved(VideoOptions o) {
+  if (o.hdr10 || o.hlg) o.bit_depth = 10;
+  if (o.hdr10 && o.hlg) throw UsageError("HDR10 and HLG: choose one");
+  if (o.codec == "auto") o.codec = o.bit_depth > 8 ? "hevc" : "h264";
+  if (!(o.frames_per_second > 0)) throw UsageError("--fps: frame rate must be positive");
+  if (o.codec != "h264" && o.codec != "hevc") throw UsageError("--codec: auto, h264 or hevc");
+  if (o.bit_depth != 8 && o.bit_depth != 10) throw UsageError("--bit-depth: 8 or 10");
+  if (o.bit_depth == 10 && o.codec != "hevc") throw UsageError("--bit-depth 10 and --hdr10 need --codec hevc");
+  return o;
+}
+
+}  // namespace
+
 VideoWriter::VideoWriter(const std::string& path, const VideoOptions& options)
-    : impl_(std::make_unique<Impl>(path, options)) {
-  if (!(options.frames_per_second > 0)) throw UsageError("--fps: frame rate must be positive");
+    : options_(resolved(options)), impl_(std::make_unique<Impl>(path, options_)) {}
+
+SinkNeeds VideoWriter::needs_for(const VideoOptions& options) {
+  if (options.hdr10) return SinkNeeds::kPq16;
+  return options.bit_depth > 8 ? SinkNeeds::kCode16 : SinkNeeds::kCode8;
 }
 
 VideoWriter::~VideoWriter() = default;
 
 void VideoWriter::write(const DisplayFrame& frame) {
-  CV_Assert(frame.code.type() == CV_8UC3);
+  CV_Assert(frame.code.type() == (impl_->options.bit_depth > 8 ? CV_16UC3 : CV_8UC3));
   if (!impl_->format) impl_->open(frame.code.cols, frame.code.rows);
   impl_->encode(frame.code, frame.time_s);
 }

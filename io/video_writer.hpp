@@ -1,5 +1,5 @@
-// H.264 in MP4 through the FFmpeg libraries (libavformat, libavcodec,
-// libswscale), tagged BT.709 primaries, transfer and matrix.
+// H.264 or HEVC in MP4 or Matroska through the FFmpeg libraries
+// (libavformat, libavcodec, libswscale), SDR BT.709 or HDR10.
 #pragma once
 
 #include <memory>
@@ -11,25 +11,37 @@ namespace eyestream::io {
 
 struct VideoOptions {
   double frames_per_second = 30.0;
-  int crf = 18;                   // x264 constant rate factor, 0 (lossless) .. 51
-  std::string preset = "medium";  // x264 speed preset
+  std::string codec = "auto";     // h264 (libx264), hevc (libx265), auto: h264 at 8 bits, else hevc
+  int bit_depth = 8;              // 8, or 10 (hevc)
+  bool hdr10 = false;             // 10-bit, PQ, BT.2020, with mastering-display metadata
+  bool hlg = false;               // 10-bit, HLG, BT.2020 tags for HLG code the caller prepared
+  double hdr10_peak_cd_m2 = 1000; // mastering display peak (and MaxCLL) for HDR10
+  int crf = 18;                   // constant rate factor, 0 (lossless) .. 51
+  std::string preset = "medium";  // encoder speed preset
   int encoder_threads = 2;        // fixed, so output bytes do not depend on --threads
 };
 
-// Writes 8-bit display-encoded RGB frames as yuv420p H.264 (libx264), limited
-// range, BT.709 matrix. Odd frame sizes are padded by one edge pixel (4:2:0
-// needs even sizes). Timestamps come from DisplayFrame::time_s at
-// 1/frames_per_second resolution.
+// Writes display-encoded RGB frames as 4:2:0 video in MP4 or, for a .mkv
+// path, Matroska: 8-bit H.264 or HEVC (code CV_8UC3), 10-bit HEVC (code
+// CV_16UC3, full 16-bit scale), limited range, tagged BT.709 primaries,
+// transfer and matrix; or HDR10 (code CV_16UC3 PQ BT.2020, tagged so, with
+// mastering-display and content-light metadata). Odd frame sizes are padded
+// by one edge pixel. Timestamps come from DisplayFrame::time_s at
+// 1/frames_per_second resolution. UsageError for a combination the
+// encoders cannot make (10-bit H.264).
 class VideoWriter : public FrameSink {
  public:
   VideoWriter(const std::string& path, const VideoOptions& options);
   ~VideoWriter() override;
-  SinkNeeds needs() const override { return SinkNeeds::kCode8; }
+  SinkNeeds needs() const override { return needs_for(options_); }
+  // What a writer with these options needs, without opening anything.
+  static SinkNeeds needs_for(const VideoOptions& options);
   void write(const DisplayFrame& frame) override;
   void finish() override;
 
  private:
   struct Impl;
+  VideoOptions options_;
   std::unique_ptr<Impl> impl_;
 };
 

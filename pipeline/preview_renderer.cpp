@@ -1,5 +1,6 @@
 #include "pipeline/preview_renderer.hpp"
 
+#include "pipeline/hdr10_encoding.hpp"
 #include "retina/display_encoding.hpp"
 
 namespace eyestream::pipeline {
@@ -30,7 +31,9 @@ io::DisplayFrame PreviewRenderer::process(const io::SceneFrame& frame, const std
   out.index = frame.index;
   out.time_s = frame.time_s;
   out.linear = compose_preview(views, options_, frame.time_s, frame.index);
-  if (needs_ != io::SinkNeeds::kLinear)
+  if (needs_ == io::SinkNeeds::kPq16)
+    encode_hdr10(out.linear, panels_[0].plan.glare.display_peak_cd_m2, out.code);
+  else if (needs_ != io::SinkNeeds::kLinear)
     retina::encode_display(out.linear, needs_ == io::SinkNeeds::kCode16 ? 16 : 8, frame.index,
                            panels_[0].plan.encoding, out.code);
   return out;

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "io/error.hpp"
-#include "io/exr_sequence_source.hpp"
+#include "io/source_factory.hpp"
 #include "io/gaze_import.hpp"
 #include "io/library_logging.hpp"
 #include "io/sink_factory.hpp"
@@ -49,12 +49,16 @@ io::GazeImportOptions gaze_import_options(const Settings& s, const io::SourceInf
   return o;
 }
 
+std::unique_ptr<io::FrameSource> open_input(const Settings& s) {
+  return io::open_source(s.input, io::SourceOptions{s.exr, s.video_input});
+}
+
 }  // namespace
 
 std::string describe_run(const Settings& s) {
-  io::ExrSequenceSource source(s.input, s.exr);
-  const PreviewRenderer renderer(s, source.info(), io::sink_needs(s.output, s.sink));
-  return s.input + ": " + source.info().description + "\n" + renderer.describe();
+  const std::unique_ptr<io::FrameSource> source = open_input(s);
+  const PreviewRenderer renderer(s, source->info(), io::sink_needs(s.output, s.sink));
+  return s.input + ": " + source->info().description + "\n" + renderer.describe();
 }
 
 namespace {
@@ -79,8 +83,8 @@ void log_frame(const io::SceneFrame& frame, const FrameReport& r) {
 RunSummary run(const Settings& s) {
   cv::setNumThreads(s.threads > 0 ? s.threads : -1);
   io::set_library_verbosity(s.verbose);
-  io::ExrSequenceSource source(s.input, s.exr);
-  const io::SourceInfo& info = source.info();
+  const std::unique_ptr<io::FrameSource> source = open_input(s);
+  const io::SourceInfo& info = source->info();
   std::vector<io::GazeSample> samples;
   if (!s.gaze.empty()) samples = io::read_gaze(s.gaze, gaze_import_options(s, info));
   const TargetRegion target(s.target_rect, s.target_mask, cv::Size(info.width, info.height));
@@ -96,9 +100,9 @@ RunSummary run(const Settings& s) {
   RunSummary summary;
   summary.output = s.output;
   Progress progress(info.frame_count, s.progress);
-  std::optional<io::SceneFrame> current = source.next();
+  std::optional<io::SceneFrame> current = source->next();
   while (current) {
-    std::optional<io::SceneFrame> next = source.next();
+    std::optional<io::SceneFrame> next = source->next();
     const double t1 = next ? next->time_s : current->time_s + 1.0 / info.frames_per_second;
     const io::DisplayFrame shown =
         renderer.process(*current, timeline.segments(current->time_s, t1), target.mask(current->index));

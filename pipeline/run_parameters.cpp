@@ -15,6 +15,10 @@ ParamSet run_parameters(Settings& s) {
                  &s.exr.frames_per_second, 1e-3, 10000));
   set.add(flag("skip-missing", "go on past missing frames of a numbered sequence", in, &s.exr.skip_missing));
   set.add(number("max-pixels", "pixels", "refuse larger frames, before allocating", in, &s.exr.max_pixels, 1, 4e9));
+  set.add(choice("video-transfer", "transfer of a video input: auto (its PQ or HLG tag), pq, hlg, or sdr (BT.1886)",
+                 in, &s.video_input.transfer, {"auto", "pq", "hlg", "sdr"}));
+  set.add(number("video-peak", "cd/m^2", "nominal peak of an HLG video (0: 1000) or white of an SDR one (0: 100)", in,
+                 &s.video_input.peak_cd_m2, 0, 1e5));
   set.add(choice("gaze-units", "gaze positions in frame pixels (px) or 0..1 of the frame (norm)", in, &s.gaze_units,
                  {"px", "norm"}));
   set.add(choice("bad-pixels", "NaN or infinite pixels: clamp (shown black, counted) or fail", in, &s.bad_pixels,
@@ -120,8 +124,15 @@ ParamSet run_parameters(Settings& s) {
   // Output.
   set.add(number("gamma", "", "display value J^gamma", out, &s.encoding.gamma, 0.1, 3));
   set.add(flag("dither", "temporal dithering before quantisation", out, &s.encoding.dither));
-  set.add(number("crf", "", "H.264 constant rate factor (lower is better)", out, &s.sink.video.crf, 0, 51));
-  set.add(choice("x264-preset", "H.264 encoder speed preset", out, &s.sink.video.preset,
+  set.add(choice("codec", "video codec: h264 (libx264), hevc (libx265); auto: h264 at 8 bits, else hevc", out,
+                 &s.sink.video.codec, {"auto", "h264", "hevc"}));
+  set.add(choice("bit-depth", "video bit depth (10 needs hevc)", out, &s.sink.video.bit_depth, {"8", "10"}));
+  set.add(flag("hdr10", "HDR10 video (hevc, 10-bit, PQ, BT.2020); display white is --display-peak cd/m^2", out,
+               &s.sink.video.hdr10));
+  set.add(number("hdr10-peak", "cd/m^2", "mastering display peak and MaxCLL written with --hdr10", out,
+                 &s.sink.video.hdr10_peak_cd_m2, 100, 10000));
+  set.add(number("crf", "", "video constant rate factor (lower is better)", out, &s.sink.video.crf, 0, 51));
+  set.add(choice("x264-preset", "video encoder speed preset (x264 and x265 names)", out, &s.sink.video.preset,
                  {"ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow"}));
   set.add(number("encoder-threads", "", "H.264 encoder threads (fixed: output bytes depend on it)", out,
                  &s.sink.video.encoder_threads, 1, 64));

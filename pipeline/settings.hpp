@@ -9,6 +9,7 @@
 
 #include "glare/viewer.hpp"
 #include "io/exr_sequence_source.hpp"
+#include "io/video_source.hpp"
 #include "io/sink_factory.hpp"
 #include "pipeline/viewing_geometry.hpp"
 #include "retina/acuity_loss.hpp"
@@ -32,6 +33,7 @@ struct Settings {
   int gaze_source_width = 0, gaze_source_height = 0;
 
   io::ExrSequenceOptions exr;
+  io::VideoSourceOptions video_input;
   io::SinkOptions sink;
   ViewingGeometry geometry;
 
