@@ -12,6 +12,7 @@ namespace eyestream::io {
 namespace {
 
 std::string lower_extension(const std::string& path) {
+  if (path == "-") return ".stream";
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   if (ext != ".mp4" && ext != ".mkv" && ext != ".png" && ext != ".exr")
@@ -23,7 +24,7 @@ std::string lower_extension(const std::string& path) {
 
 std::unique_ptr<FrameSink> make_sink(const std::string& path, const SinkOptions& options) {
   const std::string ext = lower_extension(path);
-  if (ext == ".mp4" || ext == ".mkv") return std::make_unique<VideoWriter>(path, options.video);
+  if (ext == ".mp4" || ext == ".mkv" || ext == ".stream") return std::make_unique<VideoWriter>(path, options.video);
   if (ext == ".png")
     return std::make_unique<ImageSequenceSink>(path, options.png_bits == 16 ? ImageFormat::kPng16 : ImageFormat::kPng8);
   return std::make_unique<ImageSequenceSink>(path, ImageFormat::kExr);
@@ -32,8 +33,7 @@ std::unique_ptr<FrameSink> make_sink(const std::string& path, const SinkOptions&
 SinkNeeds sink_needs(const std::string& path, const SinkOptions& options) {
   const std::string ext = lower_extension(path);
   if (ext == ".exr") return SinkNeeds::kLinear;
-  if (ext == ".mp4" || ext == ".mkv")
-    return VideoWriter::needs_for(options.video);
+  if (ext == ".mp4" || ext == ".mkv" || ext == ".stream") return VideoWriter::needs_for(options.video);
   return ext == ".png" && options.png_bits == 16 ? SinkNeeds::kCode16 : SinkNeeds::kCode8;
 }
 

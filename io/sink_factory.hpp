@@ -14,7 +14,8 @@ struct SinkOptions {
   int png_bits = 8;  // 8 or 16
 };
 
-// .mp4/.mkv -> video; .png -> PNG sequence; .exr -> EXR sequence. Any other
+// .mp4/.mkv -> video; "-" -> video on standard output (--format); .png ->
+// PNG sequence; .exr -> EXR sequence. Any other
 // extension is a UsageError naming the path.
 std::unique_ptr<FrameSink> make_sink(const std::string& path, const SinkOptions& options);
 

@@ -3,11 +3,23 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "io/error.hpp"
+#include "io/float_image_source.hpp"
 #include "io/frame_sequence.hpp"
+#include "io/raw_stream_source.hpp"
 
 namespace eyestream::io {
 
 std::unique_ptr<FrameSource> open_source(const std::string& input, const SourceOptions& o) {
+  if (input == "-") {
+    RawStreamOptions raw;
+    if (o.raw_size.empty()) throw UsageError("-i -: raw frames on standard input need --size WxH");
+    parse_frame_size(o.raw_size, raw.width, raw.height);
+    raw.frames_per_second = o.exr.frames_per_second.value_or(o.exr.default_frames_per_second);
+    raw.scale = o.exr.scale.value_or(1.0);
+    return std::make_unique<RawStreamSource>(stdin, "standard input", raw);
+  }
+  if (is_float_image_input(input)) return std::make_unique<FloatImageSource>(input, o.exr);
   std::string ext = std::filesystem::path(input).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   if (is_printf_pattern(input) || ext == ".exr" || std::filesystem::is_directory(input) ||

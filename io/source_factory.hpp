@@ -14,10 +14,14 @@ namespace eyestream::io {
 struct SourceOptions {
   ExrSequenceOptions exr;
   VideoSourceOptions video;
+  std::string raw_size;  // WxH of raw frames on standard input
 };
 
-// A printf pattern, a folder or a .exr file is an EXR sequence; any other
-// file is opened as a video. InputError naming the input otherwise.
+// "-" is raw float frames on standard input (raw_stream_source.hpp);
+// .hdr or .pfm stills (a file, pattern or folder of them) are read by
+// OpenCV; a printf pattern, a folder or a .exr file is an EXR sequence;
+// any other file is opened as a video. InputError naming the input
+// otherwise.
 std::unique_ptr<FrameSource> open_source(const std::string& input, const SourceOptions& options);
 
 }  // namespace eyestream::io

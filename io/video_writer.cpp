@@ -11,6 +11,7 @@ extern "C" {
 }
 
 #include <cmath>
+#include <optional>
 #include <opencv2/core.hpp>
 
 #include "io/error.hpp"
@@ -29,7 +30,8 @@ std::string av_message(int code) {
 }  // namespace
 
 struct VideoWriter::Impl {
-  StagedFile file;
+  std::optional<StagedFile> file;  // none when writing to standard output
+  std::string name;                 // for messages
   VideoOptions options;
   AVFormatContext* format = nullptr;
   AVCodecContext* codec = nullptr;
@@ -41,7 +43,9 @@ struct VideoWriter::Impl {
   int width = 0, height = 0;  // encoded (even) size
   std::int64_t last_pts = -1;
 
-  Impl(const std::string& path, const VideoOptions& o) : file(path), options(o) {}
+  Impl(const std::string& path, const VideoOptions& o) : name(path == "-" ? "standard output" : path), options(o) {
+    if (path != "-") file.emplace(path);
+  }
 
   ~Impl() {
     sws_freeContext(sws);
@@ -55,24 +59,26 @@ struct VideoWriter::Impl {
   }
 
   [[noreturn]] void fail(const std::string& what, int code) const {
-    throw OutputError(file.final_path().string() + ": " + what + ": " + av_message(code));
+    throw OutputError(name + ": " + what + ": " + av_message(code));
   }
 
   void open(int frame_width, int frame_height) {
     width = frame_width + (frame_width & 1);
     height = frame_height + (frame_height & 1);
     rate = av_d2q(options.frames_per_second, 1 << 20);
-    const std::string temp = file.temp_path().string();
-    const bool mkv = file.final_path().extension() == ".mkv" || file.final_path().extension() == ".MKV";
-    int rc = avformat_alloc_output_context2(&format, nullptr, mkv ? "matroska" : "mp4", temp.c_str());
+    const std::string target = file ? file->temp_path().string() : "pipe:1";
+    const std::string ext = file ? file->final_path().extension().string() : "." + options.stream_format;
+    const bool mkv = ext == ".mkv" || ext == ".MKV";
+    int rc = avformat_alloc_output_context2(&format, nullptr, mkv ? "matroska" : "mp4", target.c_str());
     if (rc < 0) fail("cannot set up the container", rc);
+    format->flags |= AVFMT_FLAG_BITEXACT;  // no random Matroska UIDs: same inputs, same bytes
     const char* encoder_name = options.codec == "hevc" ? "libx265" : "libx264";
     const AVCodec* encoder = avcodec_find_encoder_by_name(encoder_name);
     if (!encoder)
-      throw OutputError(file.final_path().string() + ": this FFmpeg build has no " + encoder_name + " encoder");
+      throw OutputError(name + ": this FFmpeg build has no " + encoder_name + " encoder");
     stream = avformat_new_stream(format, nullptr);
     codec = avcodec_alloc_context3(encoder);
-    if (!stream || !codec) throw OutputError(file.final_path().string() + ": out of memory");
+    if (!stream || !codec) throw OutputError(name + ": out of memory");
     codec->width = width;
     codec->height = height;
     codec->pix_fmt = pixel_format();
@@ -93,21 +99,24 @@ struct VideoWriter::Impl {
     if (rc < 0) fail("cannot set stream parameters", rc);
     stream->time_base = codec->time_base;
     stream->avg_frame_rate = rate;
-    rc = avio_open(&format->pb, temp.c_str(), AVIO_FLAG_WRITE);
+    rc = avio_open(&format->pb, target.c_str(), AVIO_FLAG_WRITE);
     if (rc < 0) fail("cannot open for writing", rc);
     if (options.hdr10) add_hdr10_side_data();
-    rc = avformat_write_header(format, nullptr);
+    AVDictionary* muxer = nullptr;
+    if (!file && !mkv) av_dict_set(&muxer, "movflags", "frag_keyframe+empty_moov", 0);  // MP4 on a pipe
+    rc = avformat_write_header(format, &muxer);
+    av_dict_free(&muxer);
     if (rc < 0) fail("cannot write the container header", rc);
 
     const AVPixelFormat rgb = options.bit_depth > 8 ? AV_PIX_FMT_RGB48LE : AV_PIX_FMT_RGB24;
     sws = sws_getContext(width, height, rgb, width, height, pixel_format(),
                          SWS_BICUBIC | SWS_ACCURATE_RND | SWS_BITEXACT, nullptr, nullptr, nullptr);
-    if (!sws) throw OutputError(file.final_path().string() + ": cannot set up colour conversion");
+    if (!sws) throw OutputError(name + ": cannot set up colour conversion");
     const int* matrix = sws_getCoefficients(options.hdr10 || options.hlg ? SWS_CS_BT2020 : SWS_CS_ITU709);
     sws_setColorspaceDetails(sws, matrix, 1, matrix, 0, 0, 1 << 16, 1 << 16);
     yuv = av_frame_alloc();
     packet = av_packet_alloc();
-    if (!yuv || !packet) throw OutputError(file.final_path().string() + ": out of memory");
+    if (!yuv || !packet) throw OutputError(name + ": out of memory");
     yuv->format = pixel_format();
     yuv->width = width;
     yuv->height = height;
@@ -191,7 +200,7 @@ struct VideoWriter::Impl {
   }
 
   void close() {
-    if (!format) throw OutputError(file.final_path().string() + ": no frame was written");
+    if (!format) throw OutputError(name + ": no frame was written");
     int rc = avcodec_send_frame(codec, nullptr);
     if (rc < 0) fail("encoding failed", rc);
     drain();
@@ -199,7 +208,7 @@ struct VideoWriter::Impl {
     if (rc < 0) fail("cannot finalise the video file", rc);
     rc = avio_closep(&format->pb);
     if (rc < 0) fail("cannot close (disk full?)", rc);
-    file.commit();
+    if (file) file->commit();
   }
 };
 

@@ -19,6 +19,7 @@ struct VideoOptions {
   int crf = 18;                   // constant rate factor, 0 (lossless) .. 51
   std::string preset = "medium";  // encoder speed preset
   int encoder_threads = 2;        // fixed, so output bytes do not depend on --threads
+  std::string stream_format = "mkv";  // container on standard output (path "-"): mkv or mp4 (fragmented)
 };
 
 // Writes display-encoded RGB frames as 4:2:0 video in MP4 or, for a .mkv
@@ -26,7 +27,8 @@ struct VideoOptions {
 // CV_16UC3, full 16-bit scale), limited range, tagged BT.709 primaries,
 // transfer and matrix; or HDR10 (code CV_16UC3 PQ BT.2020, tagged so, with
 // mastering-display and content-light metadata). Odd frame sizes are padded
-// by one edge pixel. Timestamps come from DisplayFrame::time_s at
+// by one edge pixel. The path "-" streams to standard output (nothing is
+// staged there). Timestamps come from DisplayFrame::time_s at
 // 1/frames_per_second resolution. UsageError for a combination the
 // encoders cannot make (10-bit H.264).
 class VideoWriter : public FrameSink {

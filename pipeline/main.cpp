@@ -46,10 +46,14 @@ int main(int argc, char** argv) {
   Settings settings;
   ParamSet params = run_parameters(settings);
   CLI::App* run_cmd = app.add_subcommand("run", "filter an HDR frame sequence with a gaze log");
-  run_cmd->add_option("-i,--input", settings.input, "EXR sequence: printf pattern (frames/%05d.exr), folder or file")
+  run_cmd
+      ->add_option("-i,--input", settings.input,
+                   "EXR sequence (frames/%05d.exr, folder or file), HDR video, .hdr/.pfm stills, or - (raw float "
+                   "RGB on standard input, with --size)")
       ->required();
   run_cmd->add_option("-g,--gaze", settings.gaze, "gaze log CSV (t,x,y[,event]); none: fixed gaze at the centre");
-  run_cmd->add_option("-o,--output", settings.output, "output: video.mp4, frames/%05d.png or frames/%05d.exr")
+  run_cmd->add_option("-o,--output", settings.output,
+                      "output: video.mp4 or .mkv, frames/%05d.png, frames/%05d.exr, or - (video on standard output)")
       ->required();
   run_cmd->add_option("--config", settings.config, "JSON file of parameter values (command line wins)");
   params.bind(*run_cmd);

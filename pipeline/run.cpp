@@ -50,7 +50,7 @@ io::GazeImportOptions gaze_import_options(const Settings& s, const io::SourceInf
 }
 
 std::unique_ptr<io::FrameSource> open_input(const Settings& s) {
-  return io::open_source(s.input, io::SourceOptions{s.exr, s.video_input});
+  return io::open_source(s.input, io::SourceOptions{s.exr, s.video_input, s.frame_size});
 }
 
 }  // namespace

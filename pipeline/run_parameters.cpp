@@ -15,6 +15,7 @@ ParamSet run_parameters(Settings& s) {
                  &s.exr.frames_per_second, 1e-3, 10000));
   set.add(flag("skip-missing", "go on past missing frames of a numbered sequence", in, &s.exr.skip_missing));
   set.add(number("max-pixels", "pixels", "refuse larger frames, before allocating", in, &s.exr.max_pixels, 1, 4e9));
+  set.add(text("size", "WxH of raw float RGB frames on standard input (-i -)", in, &s.frame_size));
   set.add(choice("video-transfer", "transfer of a video input: auto (its PQ or HLG tag), pq, hlg, or sdr (BT.1886)",
                  in, &s.video_input.transfer, {"auto", "pq", "hlg", "sdr"}));
   set.add(number("video-peak", "cd/m^2", "nominal peak of an HLG video (0: 1000) or white of an SDR one (0: 100)", in,
@@ -131,6 +132,8 @@ ParamSet run_parameters(Settings& s) {
                &s.sink.video.hdr10));
   set.add(number("hdr10-peak", "cd/m^2", "mastering display peak and MaxCLL written with --hdr10", out,
                  &s.sink.video.hdr10_peak_cd_m2, 100, 10000));
+  set.add(choice("format", "container of a video on standard output (-o -)", out, &s.sink.video.stream_format,
+                 {"mkv", "mp4"}));
   set.add(number("crf", "", "video constant rate factor (lower is better)", out, &s.sink.video.crf, 0, 51));
   set.add(choice("x264-preset", "video encoder speed preset (x264 and x265 names)", out, &s.sink.video.preset,
                  {"ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow"}));

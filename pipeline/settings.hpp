@@ -34,6 +34,7 @@ struct Settings {
 
   io::ExrSequenceOptions exr;
   io::VideoSourceOptions video_input;
+  std::string frame_size;  // WxH of raw frames on standard input (-i -)
   io::SinkOptions sink;
   ViewingGeometry geometry;
 

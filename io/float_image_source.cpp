@@ -1,0 +1,76 @@
+#include "io/float_image_source.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "io/error.hpp"
+#include "io/staged_file.hpp"
+
+namespace eyestream::io {
+
+namespace {
+
+const std::vector<std::string> kExtensions = {".hdr", ".pfm"};
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+}  // namespace
+
+bool is_float_image_input(const std::string& input) {
+  const std::string ext = lower_extension(input);
+  if (ext == ".hdr" || ext == ".pfm") return true;
+  if (!std::filesystem::is_directory(input)) return false;
+  for (const auto& e : std::filesystem::directory_iterator(input)) {
+    const std::string x = lower_extension(e.path().string());
+    if (x == ".exr") return false;
+    if (x == ".hdr" || x == ".pfm") return true;
+  }
+  return false;
+}
+
+FloatImageSource::FloatImageSource(const std::string& input, const ExrSequenceOptions& o)
+    : options_(o), entries_(list_sequence(input, kExtensions, o.skip_missing)) {
+  for (const SequenceEntry& e : entries_) protect_input(e.path);
+  info_.frames_per_second = o.frames_per_second.value_or(o.default_frames_per_second);
+  if (!(info_.frames_per_second > 0)) throw UsageError("--fps: frame rate must be positive");
+  info_.frame_count = std::int64_t(entries_.size());
+  info_.description = std::to_string(entries_.size()) + " " + lower_extension(entries_.front().path) + " stills";
+  first_ = next();  // sets the size; handed out first
+}
+
+std::optional<SceneFrame> FloatImageSource::next() {
+  if (first_) {
+    std::optional<SceneFrame> f = std::move(first_);
+    first_.reset();
+    return f;
+  }
+  if (position_ >= entries_.size()) return std::nullopt;
+  const SequenceEntry& entry = entries_[position_];
+  const std::int64_t index = std::int64_t(position_++);
+  const cv::Mat bgr = cv::imread(entry.path, cv::IMREAD_UNCHANGED);
+  if (bgr.empty() || bgr.depth() != CV_32F || (bgr.channels() != 3 && bgr.channels() != 1))
+    throw InputError(entry.path + ": cannot read as a floating-point RGB image");
+  if (index == 0 && info_.width == 0) info_.width = bgr.cols, info_.height = bgr.rows;
+  if (bgr.cols * std::int64_t(bgr.rows) > options_.max_pixels)
+    throw InputError(entry.path + ": exceeds --max-pixels");
+  if (bgr.cols != info_.width || bgr.rows != info_.height)
+    throw InputError(entry.path + ": frame " + std::to_string(index) + " is " + std::to_string(bgr.cols) + "x" +
+                     std::to_string(bgr.rows) + ", the sequence began at " + std::to_string(info_.width) + "x" +
+                     std::to_string(info_.height));
+  SceneFrame f;
+  cv::cvtColor(bgr, f.rgb, bgr.channels() == 1 ? cv::COLOR_GRAY2RGB : cv::COLOR_BGR2RGB);
+  const double scale = options_.scale.value_or(lower_extension(entry.path) == ".hdr" ? 179.0 : 1.0);
+  if (scale != 1.0) f.rgb *= scale;
+  f.index = index;
+  f.time_s = double(entry.number - entries_.front().number) / info_.frames_per_second;
+  f.source = entry.path;
+  return f;
+}
+
+}  // namespace eyestream::io

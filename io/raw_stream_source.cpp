@@ -1,0 +1,45 @@
+#include "io/raw_stream_source.hpp"
+
+#include <cstdio>
+
+#include "io/error.hpp"
+
+namespace eyestream::io {
+
+void parse_frame_size(const std::string& text, int& width, int& height) {
+  char x = 0, extra = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &width, &x, &height, &extra) != 3 || (x != 'x' && x != 'X') ||
+      width < 1 || height < 1 || width > 65536 || height > 65536)
+    throw UsageError("--size '" + text + "': expected WIDTHxHEIGHT, e.g. 1920x1080");
+}
+
+RawStreamSource::RawStreamSource(std::FILE* stream, std::string name, const RawStreamOptions& o)
+    : stream_(stream), name_(std::move(name)), options_(o) {
+  if (o.width < 1 || o.height < 1) throw UsageError("-i -: raw frames on standard input need --size WxH");
+  if (!(o.frames_per_second > 0)) throw UsageError("--fps: frame rate must be positive");
+  info_.width = o.width;
+  info_.height = o.height;
+  info_.frames_per_second = o.frames_per_second;
+  info_.frame_count = -1;
+  info_.description = "raw float RGB frames on " + name_;
+}
+
+std::optional<SceneFrame> RawStreamSource::next() {
+  cv::Mat rgb(options_.height, options_.width, CV_32FC3);
+  const size_t want = rgb.total() * rgb.elemSize();
+  const size_t got = std::fread(rgb.data, 1, want, stream_);
+  if (got == 0 && std::feof(stream_)) return std::nullopt;
+  if (got != want)
+    throw InputError(name_ + ": frame " + std::to_string(index_) + " is truncated (" + std::to_string(got) + " of " +
+                     std::to_string(want) + " bytes)");
+  if (options_.scale != 1.0) rgb *= options_.scale;
+  SceneFrame f;
+  f.rgb = rgb;
+  f.index = index_;
+  f.time_s = double(index_) / options_.frames_per_second;
+  f.source = name_;
+  ++index_;
+  return f;
+}
+
+}  // namespace eyestream::io
