@@ -19,6 +19,7 @@ ExrSequenceSource::ExrSequenceSource(const std::string& input, const ExrSequence
   info_.frames_per_second = fps;
   info_.frame_count = std::int64_t(entries_.size());
   info_.description = "EXR sequence, " + std::to_string(entries_.size()) + " frames, " + probe.channels;
+  channels_ = probe.channels;
   first_ = decode(entries_.front(), 0);
 }
 
@@ -28,6 +29,9 @@ SceneFrame ExrSequenceSource::decode(const SequenceEntry& entry, std::int64_t in
     throw InputError(entry.path + ": frame " + std::to_string(index) + " is " + std::to_string(image.rgb.cols) + "x" +
                      std::to_string(image.rgb.rows) + ", the sequence began at " + std::to_string(info_.width) + "x" +
                      std::to_string(info_.height));
+  if (index > 0 && image.channels != channels_)
+    throw InputError(entry.path + ": frame " + std::to_string(index) + " has channels " + image.channels +
+                     ", the sequence began with " + channels_);
   if (image.chromaticities) {
     cv::Matx33d m = to_rec709_matrix(*image.chromaticities);
     if (!is_identity(m)) apply_matrix(image.rgb, m);

@@ -23,8 +23,8 @@ struct ExrSequenceOptions {
 // is --scale, else the file's whiteLuminance, else 1 (values already in
 // cd/m^2); converted from the file's chromaticities when they differ from
 // Rec.709. Frame k's time is (number_k - number_0) / fps, so a skipped frame
-// keeps the timing of the rest. A frame whose size differs from the first is
-// an InputError naming it.
+// keeps the timing of the rest. A frame whose size or channels (RGB, RGBA,
+// Y) differ from the first is an InputError naming it.
 class ExrSequenceSource : public FrameSource {
  public:
   ExrSequenceSource(const std::string& input, const ExrSequenceOptions& options);
@@ -38,6 +38,7 @@ class ExrSequenceSource : public FrameSource {
   std::vector<SequenceEntry> entries_;
   std::optional<SceneFrame> first_;  // decoded while probing, handed out first
   SourceInfo info_;
+  std::string channels_;  // of the first frame; every frame must match
   size_t position_ = 0;
 };
 

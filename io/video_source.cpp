@@ -1,6 +1,7 @@
 #include "io/video_source.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 #include "io/error.hpp"
 #include "io/primaries.hpp"
@@ -28,6 +29,7 @@ VideoSource::VideoSource(const std::string& path, const VideoSourceOptions& o) :
   const VideoColour& c = reader_->colour();
   transfer_ = transfer_from_tag(path, c, o.transfer);
   peak_ = o.peak_cd_m2 > 0 ? o.peak_cd_m2 : transfer_ == "sdr" ? 100.0 : 1000.0;
+  stop_on_bad_ = o.on_bad_video == "stop";
   bt2020_ = c.primaries == "bt2020" || (c.primaries == "unknown" && transfer_ != "sdr");
   if (std::int64_t(reader_->width()) * reader_->height() > o.max_pixels)
     throw InputError(path + ": " + std::to_string(reader_->width()) + "x" + std::to_string(reader_->height()) +
@@ -47,8 +49,26 @@ VideoSource::VideoSource(const std::string& path, const VideoSourceOptions& o) :
 }
 
 std::optional<SceneFrame> VideoSource::next() {
-  std::optional<VideoFrame> v = reader_->next();
-  if (!v) return std::nullopt;
+  std::optional<VideoFrame> v;
+  try {
+    v = reader_->next();
+  } catch (const InputError& e) {
+    if (!stop_on_bad_) throw;
+    std::fprintf(stderr, "eyestream: warning: %s; stopping after %lld frames (--on-bad-video stop)\n", e.what(),
+                 (long long)read_);
+    return std::nullopt;
+  }
+  if (!v) {
+    const std::int64_t expected = reader_->expected_frames();
+    if (expected > read_ + 1) {
+      const std::string message = path_ + ": ends after " + std::to_string(read_) + " frames, its container says " +
+                                  std::to_string(expected);
+      if (!stop_on_bad_) throw InputError(message + " (--on-bad-video stop keeps what was read)");
+      std::fprintf(stderr, "eyestream: warning: %s\n", message.c_str());
+    }
+    return std::nullopt;
+  }
+  ++read_;
   cv::Mat rgb = v->rgb;
   const double gamma = hlg_system_gamma(peak_);
   rgb.forEach<cv::Vec3f>([&](cv::Vec3f& p, const int*) {

@@ -19,6 +19,10 @@ struct VideoSourceOptions {
   std::string transfer = "auto";
   double peak_cd_m2 = 0.0;  // HLG nominal peak (0: 1000) or SDR white (0: 100), cd/m^2
   std::int64_t max_pixels = 400'000'000;
+  // A packet that does not decode, or a file that ends more than a frame
+  // before its container says: fail (InputError), or stop there with a
+  // warning on stderr, so what was read is finalised.
+  std::string on_bad_video = "fail";
 };
 
 // Decodes each frame to linear Rec.709 in cd/m^2: the transfer's EOTF (for
@@ -40,6 +44,8 @@ class VideoSource : public FrameSource {
   double peak_ = 0.0;
   bool bt2020_ = false;
   std::vector<float> lut_;  // 16-bit code -> linear (PQ: cd/m^2; HLG: scene light; SDR: relative)
+  bool stop_on_bad_ = false;
+  std::int64_t read_ = 0;
   SourceInfo info_;
 };
 

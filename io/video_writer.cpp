@@ -84,6 +84,7 @@ struct VideoWriter::Impl {
     codec->pix_fmt = pixel_format();
     codec->time_base = av_inv_q(rate);
     codec->framerate = rate;
+    codec->gop_size = options.keyint;
     tag(codec->color_primaries, codec->color_trc, codec->colorspace);
     codec->color_range = AVCOL_RANGE_MPEG;
     codec->thread_count = options.encoder_threads;

@@ -17,6 +17,7 @@ struct VideoOptions {
   bool hlg = false;               // 10-bit, HLG, BT.2020 tags for HLG code the caller prepared
   double hdr10_peak_cd_m2 = 1000; // mastering display peak (and MaxCLL) for HDR10
   int crf = 18;                   // constant rate factor, 0 (lossless) .. 51
+  int keyint = 250;               // longest distance between keyframes (1: every frame)
   std::string preset = "medium";  // encoder speed preset
   int encoder_threads = 2;        // fixed, so output bytes do not depend on --threads
   std::string stream_format = "mkv";  // container on standard output (path "-"): mkv or mp4 (fragmented)

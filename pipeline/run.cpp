@@ -121,6 +121,7 @@ RunSummary run(const Settings& s) {
     progress.frame_done();
     current = std::move(next);
   }
+  if (summary.frames == 0) throw InputError(s.input + ": no frame could be read");
   sink->finish();
   if (report) report->finish();
   progress.finish();

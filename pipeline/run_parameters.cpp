@@ -15,6 +15,8 @@ ParamSet run_parameters(Settings& s) {
                  &s.exr.frames_per_second, 1e-3, 10000));
   set.add(flag("skip-missing", "go on past missing frames of a numbered sequence", in, &s.exr.skip_missing));
   set.add(number("max-pixels", "pixels", "refuse larger frames, before allocating", in, &s.exr.max_pixels, 1, 4e9));
+  set.add(choice("on-bad-video", "a video packet that does not decode, or a video that ends early: fail, or stop "
+                 "there keeping what was read", in, &s.video_input.on_bad_video, {"fail", "stop"}));
   set.add(text("size", "WxH of raw float RGB frames on standard input (-i -)", in, &s.frame_size));
   set.add(choice("video-transfer", "transfer of a video input: auto (its PQ or HLG tag), pq, hlg, or sdr (BT.1886)",
                  in, &s.video_input.transfer, {"auto", "pq", "hlg", "sdr"}));
@@ -134,6 +136,8 @@ ParamSet run_parameters(Settings& s) {
                  &s.sink.video.hdr10_peak_cd_m2, 100, 10000));
   set.add(choice("format", "container of a video on standard output (-o -)", out, &s.sink.video.stream_format,
                  {"mkv", "mp4"}));
+  set.add(number("keyint", "frames", "longest distance between video keyframes (seeking, cutting)", out,
+                 &s.sink.video.keyint, 1, 10000));
   set.add(number("crf", "", "video constant rate factor (lower is better)", out, &s.sink.video.crf, 0, 51));
   set.add(choice("x264-preset", "video encoder speed preset (x264 and x265 names)", out, &s.sink.video.preset,
                  {"ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow"}));

@@ -153,5 +153,21 @@ TEST(ExrSequenceSource, FrameOfAnotherSizeIsAnInputErrorNamingIt) {
   }
 }
 
+TEST(ExrSequenceSource, FrameWithOtherChannelsIsAnInputErrorNamingIt) {
+  ScratchDir dir;
+  write_channels(dir / "c_00.exr", test::constant_frame(4, 4, {1, 1, 1}), {"R", "G", "B"});
+  write_channels(dir / "c_01.exr", test::constant_frame(4, 4, {1, 1, 1}), {"Y"});
+  ExrSequenceSource source(dir / "c_%02d.exr", {});
+  ASSERT_TRUE(source.next());
+  try {
+    source.next();
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("c_01.exr: frame 1 has channels Y, the sequence began with RGB"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace eyestream::io

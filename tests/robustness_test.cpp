@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 
 #include "io/exr_file.hpp"
 #include "pipeline/eye_simulator.hpp"
@@ -36,6 +37,29 @@ TEST(Robustness, UnwritableOutputFailsWithExitCode4) {
   const auto r = test::run_eyestream("run -i " + (dir / "f_%d.exr") + " -o /dev/null/sub/v.mp4");
   EXPECT_EQ(r.exit_code, 4) << r.output;
   EXPECT_NE(r.output.find("/dev/null/sub"), std::string::npos) << r.output;
+}
+
+// A video that ends before its container says: fail (exit 3, naming the
+// file, no output), or with --on-bad-video stop, finalise what was read.
+TEST(Robustness, TruncatedVideoFailsOrStopsWithWhatWasRead) {
+  test::ScratchDir dir;
+  ASSERT_EQ(test::run_eyestream("sample night-drive -o " + (dir / "nd") + " --width 160 --height 90 --duration 0.5")
+                .exit_code,
+            0);
+  auto r = test::run_eyestream("run -i " + (dir / "nd/frames") + " -o " + (dir / "full.mkv") + " --hdr10 --keyint 1");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string bytes = test::read_bytes(dir / "full.mkv");
+  std::ofstream(dir / "cut.mkv", std::ios::binary).write(bytes.data(), std::streamsize(bytes.size() * 7 / 10));
+  r = test::run_eyestream("run -i " + (dir / "cut.mkv") + " -o " + (dir / "a.mp4"));
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_NE(r.output.find("cut.mkv: ends after"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir / "a.mp4"));
+  r = test::run_eyestream("run -i " + (dir / "cut.mkv") + " -o " + (dir / "b/%05d.png") + " --on-bad-video stop");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("warning"), std::string::npos) << r.output;
+  const int written = test::count_entries(dir.path() / "b");
+  EXPECT_GT(written, 3);
+  EXPECT_LT(written, 15);
 }
 
 pipeline::Plan small_plan(int w, int h) { return test::plan_for(pipeline::Settings{}, w, h); }
