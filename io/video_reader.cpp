@@ -143,12 +143,9 @@ std::int64_t VideoReader::frame_count() const {
   const std::int64_t n = impl_->format->streams[impl_->stream]->nb_frames;
   return n > 0 ? n : -1;
 }
-std::int64_t VideoReader::expected_frames() const {
-  if (frame_count() > 0) return frame_count();
-  const std::int64_t duration = impl_->format->duration;
-  const double fps = frames_per_second();
-  if (duration <= 0 || fps <= 0) return -1;
-  return std::llround(double(duration) / AV_TIME_BASE * fps);
+double VideoReader::duration_s() const {
+  const std::int64_t d = impl_->format->duration;
+  return d > 0 ? double(d) / AV_TIME_BASE : -1.0;
 }
 
 const VideoColour& VideoReader::colour() const { return impl_->colour; }

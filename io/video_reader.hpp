@@ -37,9 +37,7 @@ class VideoReader {
   int height() const;
   double frames_per_second() const;   // the stream's average rate (0 when unknown)
   std::int64_t frame_count() const;   // from the container; -1 when it does not say
-  // Frames the container promises: its frame count, else its duration
-  // times the frame rate; -1 when it says neither.
-  std::int64_t expected_frames() const;
+  double duration_s() const;          // the container's duration; -1 when it does not say
   const VideoColour& colour() const;
   const std::string& path() const;
 

@@ -59,16 +59,22 @@ std::optional<SceneFrame> VideoSource::next() {
     return std::nullopt;
   }
   if (!v) {
-    const std::int64_t expected = reader_->expected_frames();
-    if (expected > read_ + 1) {
-      const std::string message = path_ + ": ends after " + std::to_string(read_) + " frames, its container says " +
-                                  std::to_string(expected);
+    // Early end: fewer frames than the container counts, or (without a
+    // count) the last frame's end well before the container's duration.
+    const double interval = 1.0 / info_.frames_per_second, duration = reader_->duration_s();
+    const bool short_count = reader_->frame_count() > read_;
+    const bool short_time = reader_->frame_count() < 0 && duration > 0 && duration - (last_time_ + interval) > 1.5 * interval;
+    if (short_count || short_time) {
+      char said[64];
+      std::snprintf(said, sizeof(said), short_count ? "%.0f frames" : "%.3f s", short_count ? double(reader_->frame_count()) : duration);
+      const std::string message = path_ + ": ends after " + std::to_string(read_) + " frames, its container says " + said;
       if (!stop_on_bad_) throw InputError(message + " (--on-bad-video stop keeps what was read)");
       std::fprintf(stderr, "eyestream: warning: %s\n", message.c_str());
     }
     return std::nullopt;
   }
   ++read_;
+  last_time_ = v->time_s;
   cv::Mat rgb = v->rgb;
   const double gamma = hlg_system_gamma(peak_);
   rgb.forEach<cv::Vec3f>([&](cv::Vec3f& p, const int*) {

@@ -46,6 +46,7 @@ class VideoSource : public FrameSource {
   std::vector<float> lut_;  // 16-bit code -> linear (PQ: cd/m^2; HLG: scene light; SDR: relative)
   bool stop_on_bad_ = false;
   std::int64_t read_ = 0;
+  double last_time_ = 0.0;
   SourceInfo info_;
 };
 

@@ -175,6 +175,9 @@ struct VideoWriter::Impl {
       if (rc == AVERROR(EAGAIN) || rc == AVERROR_EOF) return;
       if (rc < 0) fail("encoding failed", rc);
       if (packet->duration == 0) packet->duration = 1;
+      // x265 leaves a lone frame's timestamps unset: it is the last frame sent.
+      if (packet->pts == AV_NOPTS_VALUE) packet->pts = packet->dts != AV_NOPTS_VALUE ? packet->dts : last_pts;
+      if (packet->dts == AV_NOPTS_VALUE) packet->dts = packet->pts;
       av_packet_rescale_ts(packet, codec->time_base, stream->time_base);
       packet->stream_index = stream->index;
       rc = av_interleaved_write_frame(format, packet);

@@ -37,8 +37,10 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
   std::vector<double> adapted;
   adapted.reserve(segments.size());
   for (const GazeSegment& seg : segments) {
-    target = seg.eye_closed ? plan_.dark_log : field.patch_mean(seg.x, seg.y, plan_.patch_half_px, plan_.surround_log);
-    if (!adaptation_) adaptation_ = target;
+    const double scene_log = field.patch_mean(seg.x, seg.y, plan_.patch_half_px, plan_.surround_log);
+    target = seg.eye_closed ? plan_.dark_log : scene_log;
+    // A sequence (or a chunk) starts adapted to its scene, even mid-blink.
+    if (!adaptation_) adaptation_ = scene_log;
     adaptation_ = retina::adaptation_step(*adaptation_, target, seg.duration(), plan_.adaptation);
     adapted.push_back(*adaptation_);
   }
@@ -97,7 +99,6 @@ void EyeSimulator::fill_glare_report(const cv::Mat& scene, const GazeSegment& ga
 }
 
 double EyeSimulator::first_target(const cv::Mat& scene, const GazeSegment& first) const {
-  if (first.eye_closed) return plan_.dark_log;
   return retina::LogLuminanceField(scene, plan_.dark_cd_m2)
       .patch_mean(first.x, first.y, plan_.patch_half_px, plan_.surround_log);
 }

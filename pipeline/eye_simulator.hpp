@@ -43,7 +43,8 @@ class EyeSimulator {
   // segment (global adaptation) or group of nearby segments (retina
   // state), and renders what the eye sees at the end of the interval:
   // darkness while the eye is closed, with any afterimages on top. On the first frame the viewer starts
-  // adapted to the first segment's target. Non-finite pixels are counted and
+  // adapted to the scene at the first gaze point (even in a blink: the
+  // viewer was looking at it before). Non-finite pixels are counted and
   // seen as black; they never enter the state.
   // Returns DisplayFrame::linear; encoding is the caller's (preview.hpp).
   // `target_mask` (CV_8U, may be empty) marks the target the report measures.

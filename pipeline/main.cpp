@@ -7,6 +7,9 @@
 
 #include "io/error.hpp"
 #include "io/frame_sequence.hpp"
+#include "io/source_factory.hpp"
+#include "io/video_concat.hpp"
+#include "pipeline/chunk_plan.hpp"
 #include "pipeline/compare_command.hpp"
 #include "pipeline/curves_command.hpp"
 #include "pipeline/exit_codes.hpp"
@@ -118,6 +121,28 @@ int main(int argc, char** argv) {
   compare_cmd->add_option("--json", cmp.json, "write per-frame and overall metrics here");
   compare_cmd->add_flag("--verbose", cmp.verbose, "a line per frame");
 
+  ChunkRequest chunks;
+  chunks.program = argv[0];
+  Settings chunk_input;
+  CLI::App* chunks_cmd = app.add_subcommand(
+      "chunks", "print one `eyestream run` command per chunk of a long input (for GNU parallel or Slurm)");
+  chunks_cmd->add_option("-i,--input", chunks.input, "the input, as for run")->required();
+  chunks_cmd->add_option("-o,--output", chunks.output, "chunk videos (chunk_%03d.mp4) or a shared frame pattern")
+      ->required();
+  chunks_cmd->add_option("--chunk-frames", chunks.chunk_frames, "frames written per chunk")->required();
+  chunks_cmd->add_option("--preroll", chunks.preroll_s, "seconds processed before each chunk, not written")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
+  chunks_cmd->add_option("run-options", chunks.run_options, "options for every chunk's run, after --");
+  chunks_cmd->allow_extras(false);
+
+  std::vector<std::string> concat_inputs;
+  std::string concat_output;
+  CLI::App* concat_cmd =
+      app.add_subcommand("concat", "join chunk videos (made with the same settings) without re-encoding");
+  concat_cmd->add_option("-o,--output", concat_output, "the joined video (.mp4 or .mkv)")->required();
+  concat_cmd->add_option("inputs", concat_inputs, "chunk videos in order")->required();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -152,6 +177,15 @@ int main(int argc, char** argv) {
       const CompareResult r = compare(cmp);
       std::printf("%s", r.text.c_str());
       return r.exit_code;
+    } else if (*chunks_cmd) {
+      const std::unique_ptr<io::FrameSource> source = io::open_source(chunks.input, io::SourceOptions{});
+      const std::vector<Chunk> plan = plan_chunks(chunks, source->info().frame_count);
+      for (const Chunk& c : plan) std::printf("%s\n", c.command.c_str());
+      std::fprintf(stderr, "eyestream: %zu chunks of up to %lld frames, %.2f s pre-roll each\n", plan.size(),
+                   (long long)chunks.chunk_frames, chunks.preroll_s);
+    } else if (*concat_cmd) {
+      io::concat_videos(concat_inputs, concat_output);
+      std::fprintf(stderr, "eyestream: joined %zu videos into %s\n", concat_inputs.size(), concat_output.c_str());
     } else if (*report_cmd) {
       if (report_png.empty()) report_png = std::filesystem::path(report_csv).replace_extension(".png").string();
       draw_report_file(report_csv, report_png);

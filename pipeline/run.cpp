@@ -1,5 +1,7 @@
 #include "pipeline/run.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <opencv2/core.hpp>
@@ -81,6 +83,9 @@ void log_frame(const io::SceneFrame& frame, const FrameReport& r) {
 }  // namespace
 
 RunSummary run(const Settings& s) {
+  if (s.end_frame != 0 && s.end_frame <= s.start_frame)
+    throw UsageError("--end-frame " + std::to_string(s.end_frame) + " must be after --start-frame " +
+                     std::to_string(s.start_frame));
   cv::setNumThreads(s.threads > 0 ? s.threads : -1);
   io::set_library_verbosity(s.verbose);
   const std::unique_ptr<io::FrameSource> source = open_input(s);
@@ -100,10 +105,14 @@ RunSummary run(const Settings& s) {
   RunSummary summary;
   summary.output = s.output;
   Progress progress(info.frame_count, s.progress);
+  const std::int64_t first_processed =
+      std::max<std::int64_t>(0, s.start_frame - std::int64_t(std::ceil(s.preroll_s * info.frames_per_second)));
   std::optional<io::SceneFrame> current = source->next();
-  while (current) {
+  while (current && current->index < first_processed) current = source->next();  // before the pre-roll
+  while (current && (s.end_frame == 0 || current->index < s.end_frame)) {
     std::optional<io::SceneFrame> next = source->next();
     const double t1 = next ? next->time_s : current->time_s + 1.0 / info.frames_per_second;
+    const bool written = current->index >= s.start_frame;
     const io::DisplayFrame shown =
         renderer.process(*current, timeline.segments(current->time_s, t1), target.mask(current->index));
     const FrameReport& main_report = renderer.report(main);
@@ -111,17 +120,20 @@ RunSummary run(const Settings& s) {
       throw InputError(current->source + ": frame " + std::to_string(current->index) + " has " +
                        std::to_string(main_report.nonfinite_pixels) +
                        " NaN or infinite pixels (--bad-pixels clamp to go on)");
-    sink->write(shown);
-    for (size_t i = 0, v = 0; report && i < renderer.panels(); ++i)
+    if (written) sink->write(shown);
+    for (size_t i = 0, v = 0; written && report && i < renderer.panels(); ++i)
       if (renderer.spec(i).viewer) report->add(current->index, current->time_s, v++, renderer.report(i));
     if (!s.state_exr.empty() && current->index == s.state_frame) renderer.eye(main).retina().write_state(s.state_exr);
     summary.nonfinite_pixels += main_report.nonfinite_pixels;
     if (s.verbose) log_frame(*current, main_report);
-    ++summary.frames;
+    summary.frames += written;
     progress.frame_done();
     current = std::move(next);
   }
-  if (summary.frames == 0) throw InputError(s.input + ": no frame could be read");
+  if (summary.frames == 0)
+    throw InputError(s.input + (s.start_frame > 0 ? ": no frame at or after --start-frame " +
+                                                       std::to_string(s.start_frame)
+                                                 : std::string(": no frame could be read")));
   sink->finish();
   if (report) report->finish();
   progress.finish();

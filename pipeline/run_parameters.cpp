@@ -163,6 +163,13 @@ ParamSet run_parameters(Settings& s) {
   set.add(flag("labels", "burn in panel labels (always with several panels)", pre, &s.labels));
   set.add(flag("gaze-overlay", "burn in a marker at the gaze, hidden during blinks", pre, &s.gaze_overlay));
   set.add(flag("timecode", "burn in the frame number and time", pre, &s.timecode));
+  // Chunks.
+  const std::string chunk = "Chunks (eyestream chunks)";
+  set.add(number("start-frame", "", "first frame written (0-based position in the input)", chunk, &s.start_frame, 0,
+                 1e12));
+  set.add(number("end-frame", "", "frame after the last one written; 0: to the end", chunk, &s.end_frame, 0, 1e12));
+  set.add(number("preroll", "s", "frames this long before --start-frame are processed, not written", chunk,
+                 &s.preroll_s, 0, 1e6));
   // Program.
   set.add(choice("quality", "preset: reference (exact, slow), balanced, fast; single options override it", prog,
                  &s.quality, {"reference", "balanced", "fast"}));

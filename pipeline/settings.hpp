@@ -86,6 +86,12 @@ struct Settings {
   bool gaze_overlay = false;  // a marker at the gaze, hidden during blinks
   bool timecode = false;      // frame number and time
 
+  // Chunks (chunk_plan.hpp): write only frames [start_frame, end_frame)
+  // after processing preroll_s seconds of frames before them unwritten.
+  std::int64_t start_frame = 0;
+  std::int64_t end_frame = 0;  // 0: to the end
+  double preroll_s = 0.0;
+
   // Program.
   std::string quality = "balanced";  // a named bundle of the knobs above (quality_presets.hpp)
   bool print_plan = false;

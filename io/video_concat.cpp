@@ -1,0 +1,93 @@
+#include "io/video_concat.hpp"
+
+extern "C" {
+#include <libavcodec/avcodec.h>
+#include <libavformat/avformat.h>
+}
+
+#include <memory>
+
+#include "io/error.hpp"
+#include "io/staged_file.hpp"
+
+namespace eyestream::io {
+
+namespace {
+
+struct InputFile {
+  AVFormatContext* format = nullptr;
+  int stream = -1;
+  ~InputFile() { avformat_close_input(&format); }
+};
+
+std::unique_ptr<InputFile> open_input(const std::string& path) {
+  auto in = std::make_unique<InputFile>();
+  if (avformat_open_input(&in->format, path.c_str(), nullptr, nullptr) < 0) throw InputError(path + ": cannot open");
+  if (avformat_find_stream_info(in->format, nullptr) < 0) throw InputError(path + ": cannot read its streams");
+  in->stream = av_find_best_stream(in->format, AVMEDIA_TYPE_VIDEO, -1, -1, nullptr, 0);
+  if (in->stream < 0) throw InputError(path + ": no video stream");
+  return in;
+}
+
+}  // namespace
+
+void concat_videos(const std::vector<std::string>& inputs, const std::string& output) {
+  if (inputs.empty()) throw UsageError("concat: no input");
+  for (const std::string& path : inputs) protect_input(path);
+  StagedFile file(output);
+  const std::string ext = file.final_path().extension().string();
+  AVFormatContext* out = nullptr;
+  if (avformat_alloc_output_context2(&out, nullptr, ext == ".mkv" ? "matroska" : "mp4",
+                                     file.temp_path().c_str()) < 0)
+    throw OutputError(output + ": cannot set up the container");
+  struct Closer {
+    AVFormatContext* f;
+    ~Closer() {
+      if (f && f->pb) avio_closep(&f->pb);
+      avformat_free_context(f);
+    }
+  } closer{out};
+  out->flags |= AVFMT_FLAG_BITEXACT;
+  AVStream* stream = avformat_new_stream(out, nullptr);
+  AVPacket* packet = av_packet_alloc();
+  std::int64_t last_dts = AV_NOPTS_VALUE;
+  const AVCodecParameters* first = nullptr;
+  std::unique_ptr<InputFile> first_input;
+  for (size_t k = 0; k < inputs.size(); ++k) {
+    std::unique_ptr<InputFile> in = open_input(inputs[k]);
+    const AVStream* src = in->format->streams[in->stream];
+    if (!first) {
+      if (avcodec_parameters_copy(stream->codecpar, src->codecpar) < 0) throw OutputError(output + ": out of memory");
+      stream->codecpar->codec_tag = 0;
+      stream->time_base = src->time_base;
+      stream->avg_frame_rate = src->avg_frame_rate;
+      if (avio_open(&out->pb, file.temp_path().c_str(), AVIO_FLAG_WRITE) < 0)
+        throw OutputError(output + ": cannot open for writing");
+      if (avformat_write_header(out, nullptr) < 0) throw OutputError(output + ": cannot write the header");
+      first = src->codecpar;
+    } else if (src->codecpar->codec_id != first->codec_id || src->codecpar->width != first->width ||
+               src->codecpar->height != first->height) {
+      throw InputError(inputs[k] + ": another codec or frame size than " + inputs[0]);
+    }
+    while (av_read_frame(in->format, packet) >= 0) {
+      if (packet->stream_index != in->stream) {
+        av_packet_unref(packet);
+        continue;
+      }
+      av_packet_rescale_ts(packet, src->time_base, stream->time_base);
+      if (last_dts != AV_NOPTS_VALUE && packet->dts != AV_NOPTS_VALUE && packet->dts <= last_dts)
+        throw InputError(inputs[k] + ": its frames overlap the previous chunk's (are the chunks in order?)");
+      if (packet->dts != AV_NOPTS_VALUE) last_dts = packet->dts;
+      packet->stream_index = stream->index;
+      packet->pos = -1;
+      if (av_interleaved_write_frame(out, packet) < 0) throw OutputError(output + ": write failed (disk full?)");
+    }
+    if (k == 0) first_input = std::move(in);  // keeps `first` valid
+  }
+  av_packet_free(&packet);
+  if (av_write_trailer(out) < 0) throw OutputError(output + ": cannot finalise");
+  if (avio_closep(&out->pb) < 0) throw OutputError(output + ": cannot close (disk full?)");
+  file.commit();
+}
+
+}  // namespace eyestream::io
