@@ -23,6 +23,9 @@ class FrameSink {
   virtual SinkNeeds needs() const = 0;
   virtual void write(const DisplayFrame& frame) = 0;
   virtual void finish() = 0;
+  // Moves the frames written so far into place (checkpoints: they must
+  // survive a crash). False when the output cannot do that (a video).
+  virtual bool commit_so_far() { return false; }
 };
 
 }  // namespace eyestream::io

@@ -22,7 +22,7 @@ SinkNeeds ImageSequenceSink::needs() const {
 }
 
 void ImageSequenceSink::write(const DisplayFrame& frame) {
-  if (!files_.empty() && !is_printf_pattern(pattern_))
+  if (written_ + std::int64_t(files_.size()) > 0 && !is_printf_pattern(pattern_))
     throw OutputError(pattern_ + ": more than one frame needs a numbered pattern such as out/%05d.png");
   StagedFile file(format_pattern(pattern_, first_number_ + frame.index));
   if (format_ == ImageFormat::kExr) {
@@ -38,9 +38,15 @@ void ImageSequenceSink::write(const DisplayFrame& frame) {
 }
 
 void ImageSequenceSink::finish() {
-  if (files_.empty()) throw OutputError(pattern_ + ": no frame was written");
+  if (written_ == 0 && files_.empty()) throw OutputError(pattern_ + ": no frame was written");
+  commit_so_far();
+}
+
+bool ImageSequenceSink::commit_so_far() {
   for (StagedFile& f : files_) f.commit();
+  written_ += std::int64_t(files_.size());
   files_.clear();
+  return true;
 }
 
 }  // namespace eyestream::io

@@ -22,12 +22,14 @@ class ImageSequenceSink : public FrameSink {
   SinkNeeds needs() const override;
   void write(const DisplayFrame& frame) override;
   void finish() override;
+  bool commit_so_far() override;
 
  private:
   std::string pattern_;
   ImageFormat format_;
   std::int64_t first_number_;
   std::vector<StagedFile> files_;
+  std::int64_t written_ = 0;
 };
 
 }  // namespace eyestream::io

@@ -30,6 +30,10 @@ class StagedFile {
   bool done_ = false;
 };
 
+// Removes the temporary files that processes no longer running left in
+// `dir` (a killed run before --resume); returns how many.
+int remove_stale_partials(const std::filesystem::path& dir);
+
 // Writes `bytes` to a staged file; the caller commits it.
 void write_all(const StagedFile& file, const std::vector<unsigned char>& bytes);
 

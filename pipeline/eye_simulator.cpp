@@ -103,4 +103,16 @@ double EyeSimulator::first_target(const cv::Mat& scene, const GazeSegment& first
       .patch_mean(first.x, first.y, plan_.patch_half_px, plan_.surround_log);
 }
 
+EyeMemory EyeSimulator::save() const {
+  EyeMemory m;
+  m.adaptation_log = adaptation_;
+  m.retina = retina_->save(m.retina_started);
+  return m;
+}
+
+void EyeSimulator::restore(const EyeMemory& m) {
+  adaptation_ = m.adaptation_log;
+  retina_->restore(m.retina, m.retina_started);
+}
+
 }  // namespace eyestream::pipeline

@@ -35,6 +35,14 @@ struct FrameReport {
   double target_veil_cd_m2 = -1.0;   // veiling luminance at the target's centroid; -1 when unknown
 };
 
+// Everything an EyeSimulator carries from frame to frame (checkpoints);
+// the optics and mesopic stages keep no state of their own.
+struct EyeMemory {
+  std::optional<double> adaptation_log;
+  bool retina_started = false;
+  std::vector<cv::Mat> retina;
+};
+
 class EyeSimulator {
  public:
   explicit EyeSimulator(Plan plan);
@@ -52,6 +60,8 @@ class EyeSimulator {
                            FrameReport* report = nullptr, const cv::Mat& target_mask = cv::Mat());
 
   double adaptation_log() const { return adaptation_.value_or(plan_.dark_log); }
+  EyeMemory save() const;
+  void restore(const EyeMemory& memory);
   const RetinaStage& retina() const { return *retina_; }
   const GlareStage* glare() const { return glare_.get(); }
 

@@ -39,6 +39,17 @@ io::DisplayFrame PreviewRenderer::process(const io::SceneFrame& frame, const std
   return out;
 }
 
+std::vector<EyeMemory> PreviewRenderer::save() const {
+  std::vector<EyeMemory> out;
+  for (const Panel& p : panels_) out.push_back(p.eye->save());
+  return out;
+}
+
+void PreviewRenderer::restore(const std::vector<EyeMemory>& memories) {
+  CV_Assert(memories.size() == panels_.size());
+  for (size_t i = 0; i < panels_.size(); ++i) panels_[i].eye->restore(memories[i]);
+}
+
 size_t PreviewRenderer::main_panel() const {
   for (size_t i = 0; i < panels_.size(); ++i)
     if (panels_[i].spec.viewer) return i;

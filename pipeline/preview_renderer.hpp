@@ -28,6 +28,9 @@ class PreviewRenderer {
   const PanelSpec& spec(size_t i) const { return panels_[i].spec; }
   const FrameReport& report(size_t i) const { return panels_[i].report; }
   const EyeSimulator& eye(size_t i) const { return *panels_[i].eye; }
+  // Checkpoints: every panel's memory, and back.
+  std::vector<EyeMemory> save() const;
+  void restore(const std::vector<EyeMemory>& memories);
   // The first viewer panel (the one logs and --state-exr follow).
   size_t main_panel() const;
   // Each panel's plan, headed by its label when there are several.

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "glare/veiling_luminance.hpp"
+#include "io/error.hpp"
 #include "io/staged_file.hpp"
 #include "pipeline/report_charts.hpp"
 #include "pipeline/target_region.hpp"
@@ -94,6 +95,28 @@ void ReportWriter::finish() {
   write_text(path_, rows_);
   write_text(std::filesystem::path(path_).replace_extension(".json").string(), summary.dump(2) + "\n");
   write_report_charts(parse_report(rows_, path_), std::filesystem::path(path_).replace_extension(".png").string());
+}
+
+nlohmann::json ReportWriter::save() const {
+  nlohmann::json summaries = nlohmann::json::array();
+  for (const Summary& m : summary_)
+    summaries.push_back({m.frames, m.glare_frames, m.closed_frames, m.veil_frames, m.target_frames, m.max_veil,
+                         m.sum_veil, m.max_ti, m.min_adaptation, m.max_adaptation, m.min_contrast,
+                         m.min_contrast_veiled});
+  return {{"rows", rows_}, {"summaries", summaries}};
+}
+
+void ReportWriter::restore(const nlohmann::json& saved) {
+  rows_ = saved.at("rows").get<std::string>();
+  const nlohmann::json& all = saved.at("summaries");
+  if (all.size() != summary_.size()) throw InputError("checkpoint: the report has another number of viewers");
+  for (size_t i = 0; i < summary_.size(); ++i) {
+    const nlohmann::json& v = all[i];
+    Summary& m = summary_[i];
+    m.frames = v[0], m.glare_frames = v[1], m.closed_frames = v[2], m.veil_frames = v[3], m.target_frames = v[4];
+    m.max_veil = v[5], m.sum_veil = v[6], m.max_ti = v[7], m.min_adaptation = v[8], m.max_adaptation = v[9];
+    m.min_contrast = v[10], m.min_contrast_veiled = v[11];
+  }
 }
 
 }  // namespace eyestream::pipeline

@@ -3,6 +3,7 @@
 // end of the run.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,9 @@ class ReportWriter {
   void add(std::int64_t frame, double time_s, size_t viewer, const FrameReport& r);
   // Writes FILE.csv, FILE.json and FILE.png.
   void finish();
+  // Checkpoints: the rows and summaries so far, and back.
+  nlohmann::json save() const;
+  void restore(const nlohmann::json& saved);
 
  private:
   struct Summary {

@@ -33,6 +33,15 @@ class RetinaStage {
   void write_state(const std::string& path) const;
 
   const retina::RetinaState& state() const { return state_; }
+  // Checkpoints: the state's matrices, and whether it has started.
+  std::vector<cv::Mat> save(bool& started) const {
+    started = started_;
+    return state_.save();
+  }
+  void restore(const std::vector<cv::Mat>& mats, bool started) {
+    state_.restore(mats);
+    started_ = started;
+  }
   const retina::RetinalGrid& grid() const { return grid_; }
 
  private:

@@ -3,15 +3,19 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <memory>
 #include <opencv2/core.hpp>
 #include <sstream>
 
 #include "io/error.hpp"
 #include "io/source_factory.hpp"
+#include "io/staged_file.hpp"
 #include "io/gaze_import.hpp"
 #include "io/library_logging.hpp"
 #include "io/sink_factory.hpp"
+#include "pipeline/checkpoint.hpp"
 #include "pipeline/gaze_timeline.hpp"
 #include "pipeline/preview_renderer.hpp"
 #include "pipeline/progress.hpp"
@@ -101,6 +105,22 @@ RunSummary run(const Settings& s) {
   const size_t main = renderer.main_panel();
   const GazeTimeline timeline(samples, info.width / 2.0, info.height / 2.0);
   std::unique_ptr<ReportWriter> report = report_writer(s, renderer);
+  const std::uint64_t identity = run_identity(s, info);
+  if ((s.checkpoint_every > 0 || s.resume) && s.checkpoint.empty())
+    throw UsageError("--checkpoint-every and --resume need --checkpoint FILE");
+  if (s.checkpoint_every > 0 && !sink->commit_so_far())
+    throw UsageError("--checkpoint-every needs a PNG or EXR frame output; split a video with `eyestream chunks`");
+  std::int64_t resume_from = 0;
+  if (s.resume) {
+    const Checkpoint c = read_checkpoint(s.checkpoint);
+    if (c.identity != identity || c.panels.size() != renderer.panels())
+      throw UsageError(s.checkpoint + ": written by a run with other settings or input; resume with the same command");
+    renderer.restore(c.panels);
+    if (report) report->restore(c.report);
+    resume_from = c.next_frame;
+    io::remove_stale_partials(std::filesystem::path(s.output).parent_path());
+  }
+  const char* kill_at = std::getenv("EYESTREAM_TEST_KILL_AT_FRAME");  // crash injection for the resume test
 
   RunSummary summary;
   summary.output = s.output;
@@ -108,7 +128,8 @@ RunSummary run(const Settings& s) {
   const std::int64_t first_processed =
       std::max<std::int64_t>(0, s.start_frame - std::int64_t(std::ceil(s.preroll_s * info.frames_per_second)));
   std::optional<io::SceneFrame> current = source->next();
-  while (current && current->index < first_processed) current = source->next();  // before the pre-roll
+  const std::int64_t skip_to = std::max(first_processed, resume_from);
+  while (current && current->index < skip_to) current = source->next();  // before the pre-roll or the checkpoint
   while (current && (s.end_frame == 0 || current->index < s.end_frame)) {
     std::optional<io::SceneFrame> next = source->next();
     const double t1 = next ? next->time_s : current->time_s + 1.0 / info.frames_per_second;
@@ -124,6 +145,12 @@ RunSummary run(const Settings& s) {
     for (size_t i = 0, v = 0; written && report && i < renderer.panels(); ++i)
       if (renderer.spec(i).viewer) report->add(current->index, current->time_s, v++, renderer.report(i));
     if (!s.state_exr.empty() && current->index == s.state_frame) renderer.eye(main).retina().write_state(s.state_exr);
+    if (written && next && s.checkpoint_every > 0 && (current->index + 1 - s.start_frame) % s.checkpoint_every == 0) {
+      sink->commit_so_far();
+      write_checkpoint(s.checkpoint, {identity, current->index + 1, report ? report->save() : nlohmann::json(),
+                                      renderer.save()});
+    }
+    if (kill_at && std::atoll(kill_at) == current->index) std::_Exit(137);
     summary.nonfinite_pixels += main_report.nonfinite_pixels;
     if (s.verbose) log_frame(*current, main_report);
     summary.frames += written;

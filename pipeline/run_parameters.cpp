@@ -177,6 +177,11 @@ ParamSet run_parameters(Settings& s) {
   set.add(number("threads", "", "worker threads; 0 uses all cores (output never depends on it)", prog, &s.threads, 0,
                  1024));
   set.add(number("seed", "", "seed of every random stream", prog, &s.seed, 0, 9.007199254740992e15));
+  set.add(text("checkpoint", "checkpoint file: written with --checkpoint-every, read with --resume", prog,
+               &s.checkpoint));
+  set.add(number("checkpoint-every", "frames", "write the complete state every N frames (PNG/EXR outputs); 0: never",
+                 prog, &s.checkpoint_every, 0, 1e12));
+  set.add(flag("resume", "continue a killed run from --checkpoint (same command otherwise)", prog, &s.resume));
   set.add(flag("progress", "progress bar on stderr when it is a terminal", prog, &s.progress));
   set.add(flag("verbose", "per-frame log on stderr", prog, &s.verbose));
   return set;

@@ -92,6 +92,11 @@ struct Settings {
   std::int64_t end_frame = 0;  // 0: to the end
   double preroll_s = 0.0;
 
+  // Checkpoints (checkpoint.hpp).
+  std::string checkpoint;            // file
+  std::int64_t checkpoint_every = 0;  // frames; 0: none
+  bool resume = false;
+
   // Program.
   std::string quality = "balanced";  // a named bundle of the knobs above (quality_presets.hpp)
   bool print_plan = false;

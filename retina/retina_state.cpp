@@ -151,4 +151,12 @@ cv::Mat RetinaState::calcium() const {
   return c;
 }
 
+void RetinaState::restore(const std::vector<cv::Mat>& mats) {
+  CV_Assert(mats.size() == 4 && mats[0].size() == bleached_.size() && mats[0].type() == bleached_.type());
+  bleached_ = mats[0].clone();
+  deficit_ = mats[1].clone();
+  bleached_rest_ = mats[2].clone();
+  response_ = mats[3].clone();
+}
+
 }  // namespace eyestream::retina

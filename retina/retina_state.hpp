@@ -4,6 +4,7 @@
 #pragma once
 
 #include <opencv2/core.hpp>
+#include <vector>
 
 #include "retina/photoreceptor.hpp"
 #include "retina/tone_curve.hpp"
@@ -52,6 +53,11 @@ class RetinaState {
   const cv::Mat& deficit() const { return deficit_; }    // D = C_max - C, LMS
   double calcium_max() const { return c_max_; }
   cv::Mat calcium() const;  // C = C_max - D, LMS
+
+  // The whole state for checkpoints: B, D, B_inf and R (the last two empty
+  // before the first step), and back. restore() takes what save() gave.
+  std::vector<cv::Mat> save() const { return {bleached_, deficit_, bleached_rest_, response_}; }
+  void restore(const std::vector<cv::Mat>& mats);
 
  private:
   PhotoreceptorParams params_;
