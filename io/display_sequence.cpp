@@ -1,5 +1,6 @@
 #include "io/display_sequence.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -16,18 +17,11 @@ const std::vector<std::string> kImageExtensions = {".png", ".exr", ".tif", ".tif
 
 bool is_image_path(const std::string& path) {
   if (std::filesystem::is_directory(path)) return true;
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-  for (const std::string& e : kImageExtensions)
-    if (ext == e) return true;
-  return false;
+  const std::string ext = lower_extension(path);
+  return std::find(kImageExtensions.begin(), kImageExtensions.end(), ext) != kImageExtensions.end();
 }
 
-bool is_exr(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".exr";
-}
+bool is_exr(const std::string& path) { return lower_extension(path) == ".exr"; }
 
 cv::Mat read_code_image(const std::string& path) {
   const cv::Mat img = cv::imread(path, cv::IMREAD_UNCHANGED);

@@ -14,12 +14,6 @@ namespace {
 
 const std::vector<std::string> kExtensions = {".hdr", ".pfm"};
 
-std::string lower_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
-
 }  // namespace
 
 bool is_float_image_input(const std::string& input) {

@@ -109,4 +109,10 @@ std::vector<SequenceEntry> list_sequence(const std::string& input, const std::ve
   return {{input, 0}};
 }
 
+std::string lower_extension(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
 }  // namespace eyestream::io

@@ -15,6 +15,9 @@ struct SequenceEntry {
 // True when `pattern` holds one printf integer conversion (%d, %05d, %5d).
 bool is_printf_pattern(const std::string& pattern);
 
+// The path's extension in lower case, with its dot (".exr"); "" if none.
+std::string lower_extension(const std::string& path);
+
 // Expands a printf pattern to a file name for `number`.
 std::string format_pattern(const std::string& pattern, std::int64_t number);
 

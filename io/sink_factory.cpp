@@ -5,16 +5,16 @@
 #include <filesystem>
 
 #include "io/error.hpp"
+#include "io/frame_sequence.hpp"
 #include "io/image_sequence_sink.hpp"
 
 namespace eyestream::io {
 
 namespace {
 
-std::string lower_extension(const std::string& path) {
+std::string output_kind(const std::string& path) {
   if (path == "-") return ".stream";
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  const std::string ext = lower_extension(path);
   if (ext != ".mp4" && ext != ".mkv" && ext != ".png" && ext != ".exr")
     throw UsageError("-o " + path + ": unknown output kind (use .mp4, .mkv, .png or .exr)");
   return ext;
@@ -23,7 +23,7 @@ std::string lower_extension(const std::string& path) {
 }  // namespace
 
 std::unique_ptr<FrameSink> make_sink(const std::string& path, const SinkOptions& options) {
-  const std::string ext = lower_extension(path);
+  const std::string ext = output_kind(path);
   if (ext == ".mp4" || ext == ".mkv" || ext == ".stream") return std::make_unique<VideoWriter>(path, options.video);
   if (ext == ".png")
     return std::make_unique<ImageSequenceSink>(path, options.png_bits == 16 ? ImageFormat::kPng16 : ImageFormat::kPng8);
@@ -31,7 +31,7 @@ std::unique_ptr<FrameSink> make_sink(const std::string& path, const SinkOptions&
 }
 
 SinkNeeds sink_needs(const std::string& path, const SinkOptions& options) {
-  const std::string ext = lower_extension(path);
+  const std::string ext = output_kind(path);
   if (ext == ".exr") return SinkNeeds::kLinear;
   if (ext == ".mp4" || ext == ".mkv" || ext == ".stream") return VideoWriter::needs_for(options.video);
   return ext == ".png" && options.png_bits == 16 ? SinkNeeds::kCode16 : SinkNeeds::kCode8;

@@ -20,9 +20,7 @@ std::unique_ptr<FrameSource> open_source(const std::string& input, const SourceO
     return std::make_unique<RawStreamSource>(stdin, "standard input", raw);
   }
   if (is_float_image_input(input)) return std::make_unique<FloatImageSource>(input, o.exr);
-  std::string ext = std::filesystem::path(input).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  if (is_printf_pattern(input) || ext == ".exr" || std::filesystem::is_directory(input) ||
+  if (is_printf_pattern(input) || lower_extension(input) == ".exr" || std::filesystem::is_directory(input) ||
       !std::filesystem::exists(input))
     return std::make_unique<ExrSequenceSource>(input, o.exr);
   VideoSourceOptions video = o.video;

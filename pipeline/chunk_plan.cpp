@@ -22,8 +22,7 @@ std::string shell_quote(const std::string& arg) {
 std::vector<Chunk> plan_chunks(const ChunkRequest& r, std::int64_t frame_count) {
   if (r.chunk_frames < 1) throw UsageError("--chunk-frames must be at least 1");
   if (frame_count < 1) throw UsageError(r.input + ": the number of frames is unknown; chunks need it");
-  std::string ext = std::filesystem::path(r.output).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  const std::string ext = io::lower_extension(r.output);
   const bool video = ext == ".mp4" || ext == ".mkv";
   if (video && !io::is_printf_pattern(r.output))
     throw UsageError("-o " + r.output + ": a chunked video needs a chunk number pattern, e.g. chunk_%03d.mp4");
