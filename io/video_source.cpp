@@ -77,14 +77,15 @@ std::optional<SceneFrame> VideoSource::next() {
   last_time_ = v->time_s;
   cv::Mat rgb = v->rgb;
   const double gamma = hlg_system_gamma(peak_);
+  const bool hlg = transfer_ == "hlg", sdr = transfer_ == "sdr";
   rgb.forEach<cv::Vec3f>([&](cv::Vec3f& p, const int*) {
     for (int c = 0; c < 3; ++c) p[c] = lut_[int(std::lround(std::clamp(p[c], 0.0f, 1.0f) * 65535.0f))];
-    if (transfer_ == "hlg") {
+    if (hlg) {
       // BT.2100 OOTF: F_D = Lw Y_s^(gamma - 1) E, Y_s in the stream's primaries.
       const double ys = bt2020_ ? 0.2627 * p[0] + 0.6780 * p[1] + 0.0593 * p[2]
                                 : 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
       p *= float(peak_ * (ys > 0 ? std::pow(ys, gamma - 1.0) : 0.0));
-    } else if (transfer_ == "sdr") {
+    } else if (sdr) {
       p *= float(peak_);
     }
   });
