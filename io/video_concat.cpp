@@ -49,7 +49,8 @@ void concat_videos(const std::vector<std::string>& inputs, const std::string& ou
   } closer{out};
   out->flags |= AVFMT_FLAG_BITEXACT;
   AVStream* stream = avformat_new_stream(out, nullptr);
-  AVPacket* packet = av_packet_alloc();
+  std::unique_ptr<AVPacket, void (*)(AVPacket*)> owned(av_packet_alloc(), [](AVPacket* p) { av_packet_free(&p); });
+  AVPacket* packet = owned.get();
   std::int64_t last_dts = AV_NOPTS_VALUE;
   const AVCodecParameters* first = nullptr;
   std::unique_ptr<InputFile> first_input;
@@ -84,7 +85,6 @@ void concat_videos(const std::vector<std::string>& inputs, const std::string& ou
     }
     if (k == 0) first_input = std::move(in);  // keeps `first` valid
   }
-  av_packet_free(&packet);
   if (av_write_trailer(out) < 0) throw OutputError(output + ": cannot finalise");
   if (avio_closep(&out->pb) < 0) throw OutputError(output + ": cannot close (disk full?)");
   file.commit();

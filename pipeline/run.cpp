@@ -84,6 +84,24 @@ void log_frame(const io::SceneFrame& frame, const FrameReport& r) {
                r.adaptation_log, r.target_log, r.glare_ran ? "ran" : "skipped (nothing above the display peak)");
 }
 
+// Checks the checkpoint options and, with --resume, restores the eyes and
+// the report from the checkpoint; returns the first frame still to write.
+std::int64_t prepare_checkpoints(const Settings& s, std::uint64_t identity, io::FrameSink& sink,
+                                 PreviewRenderer& renderer, ReportWriter* report) {
+  if ((s.checkpoint_every > 0 || s.resume) && s.checkpoint.empty())
+    throw UsageError("--checkpoint-every and --resume need --checkpoint FILE");
+  if (s.checkpoint_every > 0 && !sink.commit_so_far())
+    throw UsageError("--checkpoint-every needs a PNG or EXR frame output; split a video with `eyestream chunks`");
+  if (!s.resume) return 0;
+  const Checkpoint c = read_checkpoint(s.checkpoint);
+  if (c.identity != identity || c.panels.size() != renderer.panels())
+    throw UsageError(s.checkpoint + ": written by a run with other settings or input; resume with the same command");
+  renderer.restore(c.panels);
+  if (report) report->restore(c.report);
+  io::remove_stale_partials(std::filesystem::path(s.output).parent_path());
+  return c.next_frame;
+}
+
 }  // namespace
 
 RunSummary run(const Settings& s) {
@@ -106,20 +124,7 @@ RunSummary run(const Settings& s) {
   const GazeTimeline timeline(samples, info.width / 2.0, info.height / 2.0);
   std::unique_ptr<ReportWriter> report = report_writer(s, renderer);
   const std::uint64_t identity = run_identity(s, info);
-  if ((s.checkpoint_every > 0 || s.resume) && s.checkpoint.empty())
-    throw UsageError("--checkpoint-every and --resume need --checkpoint FILE");
-  if (s.checkpoint_every > 0 && !sink->commit_so_far())
-    throw UsageError("--checkpoint-every needs a PNG or EXR frame output; split a video with `eyestream chunks`");
-  std::int64_t resume_from = 0;
-  if (s.resume) {
-    const Checkpoint c = read_checkpoint(s.checkpoint);
-    if (c.identity != identity || c.panels.size() != renderer.panels())
-      throw UsageError(s.checkpoint + ": written by a run with other settings or input; resume with the same command");
-    renderer.restore(c.panels);
-    if (report) report->restore(c.report);
-    resume_from = c.next_frame;
-    io::remove_stale_partials(std::filesystem::path(s.output).parent_path());
-  }
+  const std::int64_t resume_from = prepare_checkpoints(s, identity, *sink, renderer, report.get());
   const char* kill_at = std::getenv("EYESTREAM_TEST_KILL_AT_FRAME");  // crash injection for the resume test
 
   RunSummary summary;
@@ -146,7 +151,7 @@ RunSummary run(const Settings& s) {
       if (renderer.spec(i).viewer) report->add(current->index, current->time_s, v++, renderer.report(i));
     if (!s.state_exr.empty() && current->index == s.state_frame) renderer.eye(main).retina().write_state(s.state_exr);
     if (written && next && s.checkpoint_every > 0 && (current->index + 1 - s.start_frame) % s.checkpoint_every == 0) {
-      sink->commit_so_far();
+      sink->commit_so_far();  // the frames so far must outlive a crash
       write_checkpoint(s.checkpoint, {identity, current->index + 1, report ? report->save() : nlohmann::json(),
                                       renderer.save()});
     }

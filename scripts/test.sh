@@ -9,4 +9,5 @@ bash scripts/build.sh "$@"
 dir=build
 [ "${1:-}" = "--sanitize" ] && dir=build-asan
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+export LSAN_OPTIONS=suppressions=$PWD/tests/lsan-suppressions.txt  # libx265's own leaks
 ctest --test-dir "$dir" --output-on-failure -j "$(nproc)"
