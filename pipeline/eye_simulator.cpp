@@ -27,9 +27,12 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
   // Optics first: the retina sees the glare (MODEL.md 1). The PSF follows
   // the adaptation at the start of the interval (the first frame's target
   // on the first frame).
+  auto clock = std::chrono::steady_clock::now();
+  StageActivity active;
+  StageTimes times;
   const double optics_log = adaptation_ ? *adaptation_ : first_target(scene, segments.front());
-  bool glare_ran = false;
-  const cv::Mat retinal = glare_ ? glare_->apply(scene, optics_log, &glare_ran) : scene;
+  const cv::Mat retinal = glare_ ? glare_->apply(scene, optics_log, &active.glare) : scene;
+  times.glare_ms = lap_ms(clock);
 
   // Global adaptation: one exact step per gaze segment (seed 001 eq. 3).
   const retina::LogLuminanceField field(retinal, plan_.dark_cd_m2);
@@ -45,8 +48,11 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
     adapted.push_back(*adaptation_);
   }
   const GazeSegment& last = segments.back();
+  times.adaptation_ms = lap_ms(clock);
   // Photoreceptor state on the retinal grid.
   retina_->advance(retinal, segments, adapted);
+  active.retina = retina_->stepped();
+  times.retina_ms = lap_ms(clock);
 
   io::DisplayFrame out;
   out.index = frame.index;
@@ -56,8 +62,10 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
   if (last.eye_closed)
     seen = cv::Mat::zeros(frame.rgb.size(), CV_32FC3);
   else
-    mesopic_->render(retinal, curve, *adaptation_, frame.time_s, seen);
-  retina_->composite(seen, last.x, last.y, out.linear);
+    mesopic_->render(retinal, curve, *adaptation_, frame.time_s, seen, &active);
+  times.mesopic_ms = lap_ms(clock);
+  active.afterimages = retina_->composite(seen, last.x, last.y, out.linear);
+  times.afterimage_ms = lap_ms(clock);
   if (report) {
     report->adaptation_log = *adaptation_;
     report->target_log = target;
@@ -65,7 +73,8 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
     report->gaze_y = last.y;
     report->eye_closed = last.eye_closed;
     report->nonfinite_pixels = nonfinite;
-    report->glare_ran = glare_ran;
+    report->active = active;
+    report->times = times;
     if (plan_.report) fill_glare_report(scene, last, target_mask, *report);
   }
   return out;

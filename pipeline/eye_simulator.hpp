@@ -12,6 +12,7 @@
 #include "pipeline/mesopic_stage.hpp"
 #include "pipeline/plan.hpp"
 #include "pipeline/retina_stage.hpp"
+#include "pipeline/stage_activity.hpp"
 #include "pipeline/target_region.hpp"
 
 namespace eyestream::pipeline {
@@ -23,7 +24,8 @@ struct FrameReport {
   double gaze_x = 0.0, gaze_y = 0.0;
   bool eye_closed = false;
   std::int64_t nonfinite_pixels = 0;
-  bool glare_ran = false;  // false when nothing exceeded the display peak (or glare is off)
+  StageActivity active;    // which stages worked on this frame (glare: false when nothing exceeded the display peak)
+  StageTimes times;        // and how long each took
   // Filled when the plan asks for a report:
   double pupil_mm = 0.0;     // Moon-Spencer pupil at the adaptation level
   double peak_cd_m2 = 0.0;   // brightest scene pixel (photopic luminance)

@@ -62,7 +62,8 @@ cv::Mat GlareStage::apply(const cv::Mat& rgb, double adaptation_log, bool* ran) 
   });
   const bool any = std::any_of(row_has.begin(), row_has.end(), [](unsigned char v) { return v != 0; });
   if (ran) *ran = any;
-  if (!any) return rgb;
+  if (!any && plan_.skip) return rgb;
+  if (ran) *ran = true;
   return kept + spread(excess, adaptation_log);
 }
 

@@ -21,7 +21,8 @@ class GlareStage {
   // 10^adaptation_log. Mode "excess" spreads only the light above the
   // display peak, colour kept (seeds 000 and 003), and adds it back; "full"
   // spreads everything. When nothing exceeds the display peak in excess
-  // mode, returns `rgb` itself and sets *ran to false: no glare work.
+  // mode, returns `rgb` itself and sets *ran to false: no glare work
+  // (unless the plan says not to skip).
   cv::Mat apply(const cv::Mat& rgb, double adaptation_log, bool* ran = nullptr) const;
 
   // The veiling luminance (cd/m^2) at (x, y) from the light more than

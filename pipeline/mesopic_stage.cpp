@@ -35,15 +35,22 @@ cv::Mat MesopicStage::acuity_level(const cv::Mat& rgb, double adaptation_log, do
 }
 
 void MesopicStage::render(const cv::Mat& rgb, const retina::ToneCurve& curve, double adaptation_log, double time_s,
-                          cv::Mat& out) const {
+                          cv::Mat& out, StageActivity* activity) const {
   retina::MesopicColour colour;
-  if (plan_.mesopic.enabled && retina::mesopic_colour(adaptation_log, plan_.mesopic.colour, colour))
+  const bool tinted = plan_.mesopic.enabled && retina::mesopic_colour(adaptation_log, plan_.mesopic.colour, colour);
+  if (tinted)
     retina::tone_map(rgb, curve, colour, out);
   else
     retina::tone_map(rgb, curve, out);
-  if (plan_.mesopic.enabled && acuity_ &&
-      retina::mesopic_rho(adaptation_log, plan_.mesopic.colour) < acuity_->rho_all_kept())
-    acuity_->apply(out, acuity_level(rgb, adaptation_log, time_s));
+  // Above rho_all_kept no band can be lost: the loss is skipped, exactly
+  // (its result would equal its input), unless the plan forbids skipping.
+  const bool blur = plan_.mesopic.enabled && acuity_ &&
+                    (!plan_.skip || retina::mesopic_rho(adaptation_log, plan_.mesopic.colour) < acuity_->rho_all_kept());
+  if (blur) acuity_->apply(out, acuity_level(rgb, adaptation_log, time_s));
+  if (activity) {
+    activity->mesopic = tinted;
+    activity->acuity = blur;
+  }
 }
 
 }  // namespace eyestream::pipeline

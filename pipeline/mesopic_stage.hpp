@@ -7,6 +7,7 @@
 #include <opencv2/core.hpp>
 
 #include "pipeline/plan.hpp"
+#include "pipeline/stage_activity.hpp"
 #include "retina/acuity_loss.hpp"
 #include "retina/tone_curve.hpp"
 
@@ -26,8 +27,9 @@ class MesopicStage {
   // effects the adaptation level calls for. At rho(A) >= 1 the colour is
   // the plain tone curve's; above the acuity stage's limit no band is lost:
   // photopic frames come out bit-identical to a run without this stage.
-  void render(const cv::Mat& rgb, const retina::ToneCurve& curve, double adaptation_log, double time_s,
-              cv::Mat& out) const;
+  // `activity` (may be null) receives which of the two effects ran.
+  void render(const cv::Mat& rgb, const retina::ToneCurve& curve, double adaptation_log, double time_s, cv::Mat& out,
+              StageActivity* activity = nullptr) const;
 
   // rho + g X of the acuity loss for a frame (for reports and tests).
   cv::Mat acuity_level(const cv::Mat& rgb, double adaptation_log, double time_s) const;

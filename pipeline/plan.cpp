@@ -43,6 +43,7 @@ Plan compile_plan(const Settings& s, const io::SourceInfo& source) {
   p.mesopic.colour = s.mesopic_colour;
   p.mesopic.acuity = s.acuity_loss;
   p.mesopic.acuity_params = s.acuity;
+  p.skip = s.skip;
   p.report = !s.report.empty();
   p.veil_exclusion_deg = s.veil_exclusion_deg;
   return p;
@@ -66,7 +67,12 @@ std::string Plan::describe() const {
     << mesopic.colour.top_log << " log10 cd/m^2; acuity loss " << (mesopic.acuity ? "on" : "off") << ")\n"
     << "stages = " << (glare.enabled ? "glare (frames with light above the display peak), " : "")
     << "adaptation, retina, tone curve, mesopic (below 7.5 cd/m^2 of adaptation), afterimages, display encoding"
-    << (encoding.dither ? " (dithered)" : "") << "\n";
+    << (encoding.dither ? " (dithered)" : "") << "\n"
+    << "skipping = "
+    << (skip ? "on (glare without light above the display peak; retina and afterimages at rest; acuity loss "
+               "where no band can be lost)"
+             : "off (--no-skip: every stage runs on every frame)")
+    << "\n";
   return o.str();
 }
 

@@ -53,6 +53,10 @@ struct Plan {
   GlarePlan glare;
   RetinaPlan retina;
   MesopicPlan mesopic;
+  // Scene-adaptive activation: skip glare on frames with nothing above the
+  // display peak, the retina and its afterimages while at rest, acuity loss
+  // where no band can be lost (stage_activity.hpp). false: run every stage.
+  bool skip = true;
   bool report = false;  // fill the disability-glare fields of FrameReport
   double veil_exclusion_deg = 1.0;
 

@@ -26,7 +26,8 @@ namespace eyestream::pipeline {
 //   empty when the veil is).
 inline constexpr const char* kReportColumns =
     "frame,time_s,viewer,gaze_x,gaze_y,eye,adaptation_cd_m2,pupil_mm,peak_cd_m2,glare,veil_cd_m2,ti_percent,"
-    "ti_valid,target_cd_m2,background_cd_m2,target_veil_cd_m2,contrast,contrast_veiled";
+    "ti_valid,target_cd_m2,background_cd_m2,target_veil_cd_m2,contrast,contrast_veiled,retina,afterimages,mesopic,"
+    "acuity";
 
 struct ReportViewer {
   std::string label;

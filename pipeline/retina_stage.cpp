@@ -61,27 +61,84 @@ void RetinaStage::advance(const cv::Mat& rgb, const std::vector<GazeSegment>& se
   const cv::Mat lms = retina::to_cone_stimulus(rgb, plan_.retina.double_precision ? CV_64F : CV_32F);
   const cv::Scalar surround = cv::Scalar::all(plan_.surround_cd_m2);
   double frame_dt = 0.0;
+  stepped_ = false;
   for (const StepGroup& g : group_segments(segments, plan_.retina.substep_tolerance_px)) {
     const cv::Mat stimulus = g.closed ? dark_ : grid_.sample(lms, g.x, g.y, surround);
-    const retina::ToneCurve curve(adaptation_log[g.last], plan_.tone);
+    const double curve_log = adaptation_log[g.last];
+    const retina::ToneCurve curve(curve_log, plan_.tone);
+    frame_dt += g.dt;
     if (!started_) {
       state_.rest(stimulus, curve);
       started_ = true;
+    } else if (plan_.skip && resting_ && unchanged(stimulus, curve_log)) {
+      pending_dt_ += g.dt;
+      continue;
     }
+    catch_up();
     state_.step(stimulus, curve, g.dt);
-    frame_dt += g.dt;
+    last_stimulus_ = stimulus;
+    last_curve_log_ = curve_log;
+    resting_ = false;
+    stepped_ = true;
   }
+  if (!stepped_) return;
   // Soft afterimages: the departure from equilibrium spreads as sigma^2 =
   // rate * dt, so the look does not depend on the frame rate.
   const double sigma_deg = std::sqrt(plan_.retina.spread_deg2_per_s * frame_dt);
   state_.soften(sigma_deg * plan_.pixels_per_degree * grid_.sites_per_pixel());
 }
 
-void RetinaStage::composite(const cv::Mat& tone_mapped, double gaze_x, double gaze_y, cv::Mat& out) const {
+bool RetinaStage::catch_up() {
+  if (!(pending_dt_ > 0)) return false;
+  state_.step(last_stimulus_, retina::ToneCurve(last_curve_log_, plan_.tone), pending_dt_);
+  const double sigma_deg = std::sqrt(plan_.retina.spread_deg2_per_s * pending_dt_);
+  state_.soften(sigma_deg * plan_.pixels_per_degree * grid_.sites_per_pixel());
+  pending_dt_ = 0.0;
+  return true;
+}
+
+bool RetinaStage::unchanged(const cv::Mat& stimulus, double curve_log) const {
+  if (last_stimulus_.empty() || std::abs(curve_log - last_curve_log_) > 1e-9) return false;
+  if (stimulus.data == last_stimulus_.data) return true;
+  // |s - s_last| <= tol (s_last + dark) at every site and cone.
+  cv::Mat excess;
+  cv::absdiff(stimulus, last_stimulus_, excess);
+  cv::scaleAdd(last_stimulus_, -kStimulusTolerance, excess, excess);
+  double worst = 0.0;
+  cv::minMaxLoc(excess.reshape(1), nullptr, &worst);
+  return worst <= kStimulusTolerance * plan_.dark_cd_m2;
+}
+
+bool RetinaStage::composite(const cv::Mat& tone_mapped, double gaze_x, double gaze_y, cv::Mat& out) {
+  if (plan_.skip && resting_) {
+    out = tone_mapped;
+    return false;
+  }
   const retina::AfterimageMaps maps = state_.afterimages(plan_.retina.afterimages, visibility_);
   const cv::Mat gain = grid_.draw(maps.gain_excess, gaze_x, gaze_y, cv::Scalar::all(0.0));
   const cv::Mat bleach = grid_.draw(maps.bleach, gaze_x, gaze_y, cv::Scalar::all(0.0));
   retina::composite_afterimages(tone_mapped, gain, bleach, out);
+  const double largest = std::max(cv::norm(maps.gain_excess, cv::NORM_INF), cv::norm(maps.bleach, cv::NORM_INF));
+  resting_ = largest <= kRestTolerance;
+  return true;
+}
+
+std::vector<cv::Mat> RetinaStage::save(bool& started) const {
+  started = started_;
+  std::vector<cv::Mat> mats = state_.save();
+  mats.push_back(last_stimulus_);
+  mats.push_back((cv::Mat_<double>(1, 3) << last_curve_log_, pending_dt_, resting_ ? 1.0 : 0.0));
+  return mats;
+}
+
+void RetinaStage::restore(const std::vector<cv::Mat>& mats, bool started) {
+  CV_Assert(mats.size() == 6 && mats[5].total() == 3 && mats[5].type() == CV_64F);
+  state_.restore({mats.begin(), mats.begin() + 4});
+  last_stimulus_ = mats[4].clone();
+  last_curve_log_ = mats[5].at<double>(0);
+  pending_dt_ = mats[5].at<double>(1);
+  resting_ = mats[5].at<double>(2) != 0.0;
+  started_ = started;
 }
 
 void RetinaStage::write_state(const std::string& path) const {

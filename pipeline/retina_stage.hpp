@@ -14,6 +14,14 @@
 
 namespace eyestream::pipeline {
 
+// Largest afterimage term (relative gain excess, or bleaching signal in
+// display-linear units) that counts as "at rest": below it, drawing the
+// afterimages changes a display value by under 5e-5 of full scale, far
+// below one 8-bit code value even where sRGB is steepest.
+inline constexpr double kRestTolerance = 5e-5;
+// Largest relative change of a site's stimulus that counts as unchanged.
+inline constexpr double kStimulusTolerance = 1e-4;
+
 class RetinaStage {
  public:
   explicit RetinaStage(const Plan& plan);
@@ -26,22 +34,21 @@ class RetinaStage {
   void advance(const cv::Mat& rgb, const std::vector<GazeSegment>& segments, const std::vector<double>& adaptation_log);
 
   // Adds the afterimages at the gaze (x, y) to the tone-mapped frame.
-  void composite(const cv::Mat& tone_mapped, double gaze_x, double gaze_y, cv::Mat& out) const;
+  // Returns false when it drew nothing because the retina is at rest.
+  bool composite(const cv::Mat& tone_mapped, double gaze_x, double gaze_y, cv::Mat& out);
+
+  // Whether the last advance() stepped the state (false: skipped at rest).
+  bool stepped() const { return stepped_; }
 
   // Writes B and C per cone (channels B.L, B.M, B.S, C.L, C.M, C.S) of the
   // grid as a float EXR.
   void write_state(const std::string& path) const;
 
   const retina::RetinaState& state() const { return state_; }
-  // Checkpoints: the state's matrices, and whether it has started.
-  std::vector<cv::Mat> save(bool& started) const {
-    started = started_;
-    return state_.save();
-  }
-  void restore(const std::vector<cv::Mat>& mats, bool started) {
-    state_.restore(mats);
-    started_ = started;
-  }
+  // Checkpoints: the state's matrices, the resting bookkeeping, and
+  // whether it has started.
+  std::vector<cv::Mat> save(bool& started) const;
+  void restore(const std::vector<cv::Mat>& mats, bool started);
   const retina::RetinalGrid& grid() const { return grid_; }
 
  private:
@@ -51,6 +58,19 @@ class RetinaStage {
   cv::Mat visibility_;  // foveal fall-off of afterimages on the grid
   cv::Mat dark_;
   bool started_ = false;
+  // Scene-adaptive activation (plan.skip): a retina at rest
+  // (every afterimage term below kRestTolerance) that keeps receiving the
+  // stimulus it was last stepped with, under the same tone curve, is not
+  // stepped; the time skipped is stepped in one exact step when the
+  // stimulus changes (the step is exact for a constant stimulus, seed 001
+  // eqs. 5 and 9, so one long step equals many short ones).
+  bool catch_up();
+  bool unchanged(const cv::Mat& stimulus, double curve_log) const;
+  cv::Mat last_stimulus_;
+  double last_curve_log_ = 0.0;
+  double pending_dt_ = 0.0;  // seconds skipped at rest, not yet stepped
+  bool resting_ = false;     // the last drawn afterimages were all below kRestTolerance
+  bool stepped_ = false;
 };
 
 }  // namespace eyestream::pipeline

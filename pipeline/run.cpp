@@ -79,9 +79,15 @@ std::unique_ptr<ReportWriter> report_writer(const Settings& s, const PreviewRend
 }
 
 void log_frame(const io::SceneFrame& frame, const FrameReport& r) {
-  std::fprintf(stderr, "frame %lld t=%.3f s gaze=(%.1f,%.1f)%s adaptation=%.3f target=%.3f glare=%s\n",
+  const auto ran = [](bool on) { return on ? "ran" : "skipped"; };
+  std::fprintf(stderr,
+               "frame %lld t=%.3f s gaze=(%.1f,%.1f)%s adaptation=%.3f target=%.3f glare=%s%s retina=%s%s "
+               "afterimages=%s mesopic=%s acuity=%s (%.1f ms)\n",
                (long long)frame.index, frame.time_s, r.gaze_x, r.gaze_y, r.eye_closed ? " closed" : "",
-               r.adaptation_log, r.target_log, r.glare_ran ? "ran" : "skipped (nothing above the display peak)");
+               r.adaptation_log, r.target_log, ran(r.active.glare),
+               r.active.glare ? "" : " (nothing above the display peak)", ran(r.active.retina),
+               r.active.retina ? "" : " (at rest)", ran(r.active.afterimages), ran(r.active.mesopic),
+               ran(r.active.acuity), r.times.total());
 }
 
 // Checks the checkpoint options and, with --resume, restores the eyes and

@@ -173,6 +173,10 @@ ParamSet run_parameters(Settings& s) {
   // Program.
   set.add(choice("quality", "preset: reference (exact, slow), balanced, fast; single options override it", prog,
                  &s.quality, {"reference", "balanced", "fast"}));
+  set.add(flag("skip",
+               "skip work a frame does not need (glare with nothing above the display peak, a retina at rest, "
+               "acuity loss in photopic light); --no-skip runs every stage",
+               prog, &s.skip));
   set.add(flag("print-plan", "print the resolved settings and stages, then stop without writing", prog, &s.print_plan));
   set.add(number("threads", "", "worker threads; 0 uses all cores (output never depends on it)", prog, &s.threads, 0,
                  1024));

@@ -100,6 +100,7 @@ struct Settings {
   // Program.
   std::string quality = "balanced";  // a named bundle of the knobs above (quality_presets.hpp)
   bool print_plan = false;
+  bool skip = true;  // scene-adaptive activation of stages (--no-skip: off)
   int threads = 0;  // 0: all cores
   std::int64_t seed = 0;
   bool progress = true;
