@@ -19,33 +19,15 @@ namespace eyestream::pipeline {
 namespace {
 
 constexpr double kDisplayGamma = 2.2;  // decodes display code values (eyestream encodes with 1/2.2)
-constexpr double kHistogramStep = 0.01, kHistogramTop = 100.0;
 
 struct FrameMetrics {
   double max_abs = 0, mean_abs = 0, psnr = 0, de_p99 = 0, de_max = 0, frac_over = 0;
 };
 
-cv::Vec3f to_linear(const cv::Vec3f& v, bool linear) {
-  if (linear) return v;
-  cv::Vec3f out;
-  for (int c = 0; c < 3; ++c) out[c] = float(std::pow(std::max(v[c], 0.0f), kDisplayGamma));
-  return out;
-}
-
 // Per-pixel CIEDE2000 (CV_32F) and the frame's metrics; rows in parallel,
 // each pixel written once, so the result does not depend on threads.
 FrameMetrics measure(const cv::Mat& a, const cv::Mat& b, bool linear, double de_threshold, cv::Mat& de) {
-  de.create(a.size(), CV_32F);
-  cv::parallel_for_(cv::Range(0, a.rows), [&](const cv::Range& rows) {
-    for (int y = rows.start; y < rows.end; ++y) {
-      const cv::Vec3f* pa = a.ptr<cv::Vec3f>(y);
-      const cv::Vec3f* pb = b.ptr<cv::Vec3f>(y);
-      float* out = de.ptr<float>(y);
-      for (int x = 0; x < a.cols; ++x)
-        out[x] = float(retina::ciede2000(retina::lab_from_linear_rec709(to_linear(pa[x], linear)),
-                                         retina::lab_from_linear_rec709(to_linear(pb[x], linear))));
-    }
-  });
+  de = retina::ciede2000_map(a, b, linear ? 1.0 : kDisplayGamma);
   FrameMetrics m;
   const cv::Mat diff = cv::abs(a - b);
   cv::minMaxLoc(diff.reshape(1), nullptr, &m.max_abs);
@@ -106,7 +88,7 @@ CompareResult compare(const CompareOptions& o) {
   nlohmann::json frames = nlohmann::json::array();
   FrameMetrics overall;
   overall.psnr = std::numeric_limits<double>::infinity();
-  std::vector<std::uint64_t> histogram(size_t(kHistogramTop / kHistogramStep) + 1, 0);
+  retina::DeltaEHistogram histogram;
   std::uint64_t pixels = 0, over = 0;
   double worst = o.metric == "psnr" ? std::numeric_limits<double>::infinity() : 0.0;
   std::int64_t worst_frame = 0, count = 0;
@@ -129,8 +111,7 @@ CompareResult compare(const CompareOptions& o) {
     }
     cv::Mat de;
     const FrameMetrics m = measure(fa->rgb, fb->rgb, a.linear(), o.de_threshold, de);
-    for (auto it = de.begin<float>(); it != de.end<float>(); ++it)
-      ++histogram[std::min(histogram.size() - 1, size_t(*it / kHistogramStep))];
+    histogram.add(de);
     pixels += de.total();
     over += std::uint64_t(std::llround(m.frac_over * double(de.total())));
     overall.max_abs = std::max(overall.max_abs, m.max_abs);
@@ -152,13 +133,7 @@ CompareResult compare(const CompareOptions& o) {
   }
   if (count > 0) {
     overall.mean_abs /= double(count);
-    std::uint64_t seen = 0;
-    const std::uint64_t target = std::uint64_t(std::ceil(0.99 * double(pixels)));
-    for (size_t i = 0; i < histogram.size(); ++i)
-      if ((seen += histogram[i]) >= target) {
-        overall.de_p99 = i * kHistogramStep;  // rounded down to the bin
-        break;
-      }
+    overall.de_p99 = histogram.quantile(0.99);  // rounded down to the bin
     overall.frac_over = double(over) / double(pixels);
   }
   std::string verdict = "pass";

@@ -11,13 +11,19 @@ namespace eyestream::pipeline {
 
 GlareStage::GlareStage(const Plan& plan) : plan_(plan) {
   if (plan.glare.gaussian) return;  // no kernels: a separable blur does the work
-  kernels_ = glare::build_component_kernels(plan.width, plan.height, plan.pixels_per_degree);
-  convolver_ = std::make_unique<glare::FftConvolver>(kernels_);
+  // The full kernels also give the report its veil (veiling_luminance.hpp).
+  if (plan.glare.tail_factor <= 1 || plan.report)
+    kernels_ = glare::build_component_kernels(plan.width, plan.height, plan.pixels_per_degree);
+  if (plan.glare.tail_factor > 1)
+    split_ = std::make_unique<glare::SplitConvolver>(plan.width, plan.height, plan.pixels_per_degree,
+                                                     plan.glare.tail_factor);
+  else
+    convolver_ = std::make_unique<glare::FftConvolver>(kernels_);
 }
 
 std::optional<double> GlareStage::veil_at(const cv::Mat& luminance, double adaptation_log, double x, double y,
                                           double exclusion_deg) const {
-  if (plan_.glare.gaussian) return std::nullopt;
+  if (plan_.glare.gaussian || kernels_.core.empty()) return std::nullopt;
   const glare::PsfWeights w =
       glare::psf_weights(plan_.glare.viewer, adaptation_log, glare::pupil_diameter_mm(adaptation_log));
   return glare::veiling_luminance(luminance, kernels_, w, x, y, exclusion_deg * plan_.pixels_per_degree);
@@ -33,7 +39,7 @@ cv::Mat GlareStage::spread(const cv::Mat& rgb, double adaptation_log) const {
   }
   const glare::PsfWeights w =
       glare::psf_weights(plan_.glare.viewer, adaptation_log, glare::pupil_diameter_mm(adaptation_log));
-  return convolver_->convolve(rgb, w);
+  return split_ ? split_->convolve(rgb, w) : convolver_->convolve(rgb, w);
 }
 
 cv::Mat GlareStage::apply(const cv::Mat& rgb, double adaptation_log, bool* ran) const {

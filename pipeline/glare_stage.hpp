@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "glare/fft_convolver.hpp"
+#include "glare/split_convolver.hpp"
 #include "glare/psf_kernel.hpp"
 #include "pipeline/plan.hpp"
 
@@ -40,7 +41,8 @@ class GlareStage {
 
   const Plan plan_;
   glare::ComponentKernels kernels_;
-  std::unique_ptr<glare::FftConvolver> convolver_;
+  std::unique_ptr<glare::FftConvolver> convolver_;     // exact engine
+  std::unique_ptr<glare::SplitConvolver> split_;       // or the split one
 };
 
 }  // namespace eyestream::pipeline

@@ -9,6 +9,8 @@
 #include "io/frame_sequence.hpp"
 #include "io/source_factory.hpp"
 #include "io/video_concat.hpp"
+#include "pipeline/bench_chart.hpp"
+#include "pipeline/bench_command.hpp"
 #include "pipeline/chunk_plan.hpp"
 #include "pipeline/compare_command.hpp"
 #include "pipeline/curves_command.hpp"
@@ -143,6 +145,24 @@ int main(int argc, char** argv) {
   concat_cmd->add_option("-o,--output", concat_output, "the joined video (.mp4 or .mkv)")->required();
   concat_cmd->add_option("inputs", concat_inputs, "chunk videos in order")->required();
 
+  BenchRequest bench;
+  int bench_threads = 0;
+  CLI::App* bench_cmd = app.add_subcommand(
+      "bench", "time each quality preset per stage on a built-in scene and measure its error against reference");
+  bench_cmd->add_option("--scene", bench.scene, "built-in scene (one that needs every stage)")->capture_default_str();
+  bench_cmd->add_option("--sizes", bench.sizes, "frame sizes: 720p, 1080p, 4k or WxH, comma-separated")
+      ->capture_default_str();
+  bench_cmd->add_option("--presets", bench.presets, "presets, comma-separated (reference first: the yardstick)")
+      ->capture_default_str();
+  bench_cmd->add_option("--frames", bench.frames, "frames per case (the scene's story compressed into them)")
+      ->check(CLI::Range(2, 100000))
+      ->capture_default_str();
+  bench_cmd->add_flag("!--no-skip-study", bench.skip_study,
+                      "leave out balanced with and without --no-skip on a dim still frame and on the scene");
+  bench_cmd->add_option("--csv", bench.csv, "write the table as CSV");
+  bench_cmd->add_option("--png", bench.png, "draw error against time per frame (PNG)");
+  bench_cmd->add_option("--threads", bench_threads, "worker threads; 0 uses all cores")->check(CLI::Range(0, 1024));
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -165,6 +185,12 @@ int main(int argc, char** argv) {
       }
       const RunSummary summary = run(settings);
       std::fprintf(stderr, "%s\n", summary.one_line().c_str());
+    } else if (*bench_cmd) {
+      cv::setNumThreads(bench_threads > 0 ? bench_threads : -1);
+      const std::vector<BenchRow> rows = run_bench(bench);
+      std::printf("%s", bench_table(rows).c_str());
+      if (!bench.csv.empty()) write_bench_csv(rows, bench.csv);
+      if (!bench.png.empty()) draw_bench_chart(rows, bench.png);
     } else if (*curves_cmd) {
       curve_params.apply("");
       write_tone_curves(curve_settings.tone, curves_output);

@@ -24,7 +24,7 @@ cv::Mat MesopicStage::acuity_level(const cv::Mat& rgb, double adaptation_log, do
         std::isfinite(l) ? std::max(l, float(plan_.dark_cd_m2)) : float(plan_.dark_cd_m2);
   });
   const double sigma = acuity_->sigmas_px().back();
-  cv::GaussianBlur(luminance, luminance, cv::Size(0, 0), sigma, sigma, cv::BORDER_REPLICATE);
+  retina::acuity_blur(luminance, luminance, sigma, plan_.mesopic.acuity_params.pyramid_from_px);
   const retina::MesopicParams& m = plan_.mesopic.colour;
   const float floor_rho = float(retina::mesopic_rho(adaptation_log, m));
   cv::Mat rho(rgb.size(), CV_32F);

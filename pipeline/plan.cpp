@@ -37,6 +37,7 @@ Plan compile_plan(const Settings& s, const io::SourceInfo& source) {
   p.glare.enabled = s.glare;
   p.glare.full = s.glare_mode == "full";
   p.glare.gaussian = s.psf_model == "gaussian";
+  p.glare.tail_factor = s.glare_engine == "exact" ? 1 : s.glare_tail_factor;
   p.glare.display_peak_cd_m2 = s.display_peak_cd_m2;
   p.glare.viewer = s.viewer;
   p.mesopic.enabled = s.mesopic;
@@ -57,7 +58,11 @@ std::string Plan::describe() const {
     << "adaptation rates = +" << adaptation.rate_up_log_per_s << " / -" << adaptation.rate_down_log_per_s
     << " log10/s\n"
     << "glare = " << (glare.enabled ? (glare.full ? "full image" : "excess over the display peak") : "off")
-    << (glare.gaussian ? ", Gaussian kernel (sigma 0.34 deg)" : ", Vos PSF") << ", viewer age "
+    << (glare.gaussian ? ", Gaussian kernel (sigma 0.34 deg)"
+        : glare.tail_factor > 1
+            ? ", Vos PSF, split engine (tail at 1/" + std::to_string(glare.tail_factor) + " resolution)"
+            : ", Vos PSF, exact FFT engine")
+    << ", viewer age "
     << glare.viewer.age_years << " years, display peak " << glare.display_peak_cd_m2 << " cd/m^2\n"
     << "retina state = " << retina.sites_per_pixel << " sites/px, " << (retina.double_precision ? "double" : "float")
     << ", sub-step tolerance " << retina.substep_tolerance_px << " px\n"

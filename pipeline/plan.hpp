@@ -34,6 +34,7 @@ struct MesopicPlan {
 struct GlarePlan {
   bool enabled = true;
   bool gaussian = false;             // seed 003's cheap kernel instead of the Vos PSF
+  int tail_factor = 1;               // Vos PSF: 1 exact FFT engine; >= 2 split engine, tail reduced this much
   double gaussian_sigma_deg = 0.34;  // seed 003
   bool full = false;
   double display_peak_cd_m2 = 100.0;

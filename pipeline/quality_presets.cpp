@@ -10,16 +10,24 @@ void apply_quality_preset(const std::string& name, Settings& s) {
     s.state_sites_per_pixel = 1.0;
     s.substep_tolerance_deg = 0.0;
     s.psf_model = "vos";
+    s.glare_engine = "exact";
+    s.acuity.pyramid_from_px = 0.0;
   } else if (name == "balanced") {
     s.precision = "float";
     s.state_sites_per_pixel = 0.5;
     s.substep_tolerance_deg = 0.05;
     s.psf_model = "vos";
+    s.glare_engine = "split";
+    s.glare_tail_factor = 2;
+    s.acuity.pyramid_from_px = 12.0;
   } else if (name == "fast") {
     s.precision = "float";
     s.state_sites_per_pixel = 0.25;
     s.substep_tolerance_deg = 0.25;
-    s.psf_model = "gaussian";
+    s.psf_model = "vos";
+    s.glare_engine = "split";
+    s.glare_tail_factor = 4;
+    s.acuity.pyramid_from_px = 6.0;
   } else {
     throw UsageError("--quality: '" + name + "' is not one of reference|balanced|fast");
   }

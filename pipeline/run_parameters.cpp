@@ -63,6 +63,12 @@ ParamSet run_parameters(Settings& s) {
   set.add(flag("glare", "the eye's point-spread function before the retina", optics, &s.glare));
   set.add(choice("psf-model", "the eye's PSF (vos, seed 000) or the cheap Gaussian of seed 003 (gaussian)", optics,
                  &s.psf_model, {"vos", "gaussian"}));
+  set.add(choice("glare-engine",
+                 "Vos PSF convolution: exact (full-resolution FFT) or split (sharp centre at full resolution, tail "
+                 "reduced by --glare-tail-factor)",
+                 optics, &s.glare_engine, {"exact", "split"}));
+  set.add(number("glare-tail-factor", "", "the split engine's reduction of the PSF's tail", optics,
+                 &s.glare_tail_factor, 2, 16));
   set.add(choice("glare-mode", "spread the light above the display peak (excess) or the whole image (full)", optics,
                  &s.glare_mode, {"excess", "full"}));
   set.add(
@@ -122,6 +128,9 @@ ParamSet run_parameters(Settings& s) {
       number("acuity-noise", "", "variance g of the stochastic acuity thresholds", meso, &s.acuity.noise_gain, 0, 2));
   set.add(number("acuity-cell", "deg", "spatial spacing of the acuity noise grid", meso, &s.acuity.noise_cell_deg, 0.01,
                  30));
+  set.add(number("acuity-pyramid-from", "px",
+                 "blurs of the acuity bands at least this wide run at reduced resolution; 0: all at full resolution",
+                 meso, &s.acuity.pyramid_from_px, 0, 1e4));
   set.add(number("acuity-period", "s", "temporal spacing of the acuity noise grid", meso, &s.acuity.noise_period_s,
                  0.01, 60));
   // Output.

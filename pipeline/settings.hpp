@@ -49,6 +49,8 @@ struct Settings {
   glare::ViewerProfile viewer;
   bool glare = true;
   std::string psf_model = "vos";      // vos: seed 000's PSF; gaussian: seed 003's sigma = 0.34 deg kernel
+  std::string glare_engine = "exact"; // Vos PSF: exact (full-resolution FFT) or split (tail at reduced resolution)
+  int glare_tail_factor = 4;          // the split engine's reduction of the tail
   std::string glare_mode = "excess";  // excess: spread the light above the display peak; full: everything
   double display_peak_cd_m2 = 100.0;  // L_dmax (MODEL.md 0)
 

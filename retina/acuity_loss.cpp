@@ -21,6 +21,24 @@ cv::Mat AcuityLoss::level(const cv::Mat& rho, double t_s) const {
   return rho + params_.noise_gain * x;  // seed 001 eq. 15: rho + g X
 }
 
+void acuity_blur(const cv::Mat& src, cv::Mat& dst, double sigma, double pyramid_from_px) {
+  int f = 1;
+  while (pyramid_from_px > 0 && sigma >= pyramid_from_px && sigma / (2 * f) >= 3.0 && src.cols / (2 * f) >= 8 &&
+         src.rows / (2 * f) >= 8)
+    f *= 2;
+  if (f == 1) {
+    cv::GaussianBlur(src, dst, cv::Size(0, 0), sigma, sigma, cv::BORDER_REPLICATE);
+    return;
+  }
+  cv::Mat small;
+  cv::resize(src, small, cv::Size((src.cols + f - 1) / f, (src.rows + f - 1) / f), 0, 0, cv::INTER_AREA);
+  // The box reduction and the bilinear enlargement blur by about f^2/12 and
+  // f^2/6 px^2 of variance themselves: the reduced blur supplies the rest.
+  const double s = std::sqrt(std::max(sigma * sigma - f * f / 4.0, 1.0)) / f;
+  cv::GaussianBlur(small, small, cv::Size(0, 0), s, s, cv::BORDER_REPLICATE);
+  cv::resize(small, dst, src.size(), 0, 0, cv::INTER_LINEAR);
+}
+
 void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
   CV_Assert(image.type() == CV_32FC3 && level.type() == CV_32F && level.size() == image.size());
   // Blur levels L_i (sigma_i), each from the previous with the missing
@@ -35,7 +53,7 @@ void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
     if (extra < 0.05)
       blurred[size_t(i) + 1] = blurred[size_t(i)];
     else
-      cv::GaussianBlur(blurred[size_t(i)], blurred[size_t(i) + 1], cv::Size(0, 0), extra, extra, cv::BORDER_REPLICATE);
+      acuity_blur(blurred[size_t(i)], blurred[size_t(i) + 1], extra, params_.pyramid_from_px);
   }
   const int bands = params_.bands;
   cv::parallel_for_(cv::Range(0, image.rows), [&](const cv::Range& rows) {

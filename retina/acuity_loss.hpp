@@ -24,6 +24,11 @@ struct AcuityParams {
   double noise_cell_deg = 0.5;   // spatial spacing of the coarse noise grid
   double noise_period_s = 0.25;  // temporal spacing of the coarse noise grid
   double noise_clip = 2.0;       // X is clipped to [-2, 2]
+  // Blurs wider than this many pixels run on the image reduced by a power
+  // of two (at least 3 px of blur left there) and are enlarged back: the
+  // coarse bands are smooth, so little is lost (quality presets); 0: every
+  // blur at full resolution (reference).
+  double pyramid_from_px = 0.0;
 };
 
 // Splits an image into difference-of-Gaussian bands G_i between sigma_(i-1)
@@ -35,6 +40,10 @@ struct AcuityParams {
 // bands first and blur scenes at 100 cd/m^2; eyestream keeps its count and
 // even spacing over rho in [0, 1].) With X clipped to +-2, every band is
 // kept once rho >= tau_0 + 2 g, so photopic scenes are untouched exactly.
+// Gaussian blur of `src` by sigma px (replicated border); a blur of at
+// least pyramid_from_px (> 0) runs on a copy reduced by a power of two.
+void acuity_blur(const cv::Mat& src, cv::Mat& dst, double sigma, double pyramid_from_px);
+
 class AcuityLoss {
  public:
   AcuityLoss(const AcuityParams& params, double pixels_per_degree, std::uint64_t seed);

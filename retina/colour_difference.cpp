@@ -1,5 +1,6 @@
 #include "retina/colour_difference.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace eyestream::retina {
@@ -64,6 +65,44 @@ double ciede2000(const cv::Vec3d& lab1, const cv::Vec3d& lab2) {
   const double r_t = -std::sin(2 * d_theta * kDeg) * r_c;
   const double l = dLp / s_l, c = dCp / s_c, h = dHp / s_h;
   return std::sqrt(l * l + c * c + h * h + r_t * c * h);
+}
+
+cv::Mat ciede2000_map(const cv::Mat& a, const cv::Mat& b, double decode_gamma) {
+  CV_Assert(a.size() == b.size() && a.type() == CV_32FC3 && b.type() == CV_32FC3);
+  auto linear = [decode_gamma](const cv::Vec3f& v) {
+    if (decode_gamma == 1.0) return v;
+    cv::Vec3f out;
+    for (int c = 0; c < 3; ++c) out[c] = float(std::pow(std::max(v[c], 0.0f), decode_gamma));
+    return out;
+  };
+  cv::Mat de(a.size(), CV_32F);
+  cv::parallel_for_(cv::Range(0, a.rows), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      const cv::Vec3f* pa = a.ptr<cv::Vec3f>(y);
+      const cv::Vec3f* pb = b.ptr<cv::Vec3f>(y);
+      float* out = de.ptr<float>(y);
+      for (int x = 0; x < a.cols; ++x)
+        out[x] = float(ciede2000(lab_from_linear_rec709(linear(pa[x])), lab_from_linear_rec709(linear(pb[x]))));
+    }
+  });
+  return de;
+}
+
+void DeltaEHistogram::add(const cv::Mat& de) {
+  CV_Assert(de.type() == CV_32F);
+  for (auto it = de.begin<float>(); it != de.end<float>(); ++it) {
+    ++bins_[std::min(bins_.size() - 1, size_t(std::max(*it, 0.0f) / kStep))];
+    max_ = std::max(max_, double(*it));
+  }
+  count_ += de.total();
+}
+
+double DeltaEHistogram::quantile(double q) const {
+  const std::uint64_t target = std::uint64_t(std::ceil(q * double(count_)));
+  std::uint64_t seen = 0;
+  for (size_t i = 0; i < bins_.size() && count_ > 0; ++i)
+    if ((seen += bins_[i]) >= target) return double(i) * kStep;
+  return 0.0;
 }
 
 }  // namespace eyestream::retina
