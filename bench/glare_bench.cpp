@@ -1,6 +1,7 @@
 // Glare cost per frame by engine (Google Benchmark; never asserts): the
-// exact Vos FFT engine and seed 003's Gaussian, on a frame with lights
-// above the display peak, plus the one-time kernel build.
+// exact Vos FFT engine, the split engine (tail at 1/2 and 1/4 resolution)
+// and seed 003's Gaussian, on a frame with lights above the display peak,
+// plus the one-time kernel build.
 #include <benchmark/benchmark.h>
 
 #include "pipeline/glare_stage.hpp"
@@ -9,9 +10,12 @@ namespace {
 
 using namespace eyestream;
 
+// model: "vos" (exact), "split2", "split4" or "gaussian".
 pipeline::Plan plan_for(int width, const std::string& model) {
   pipeline::Settings s;
-  s.psf_model = model;
+  s.psf_model = model == "gaussian" ? "gaussian" : "vos";
+  s.glare_engine = model.rfind("split", 0) == 0 ? "split" : "exact";
+  if (s.glare_engine == "split") s.glare_tail_factor = model.back() - '0';
   io::SourceInfo info;
   info.width = width;
   info.height = width * 9 / 16;
@@ -41,18 +45,14 @@ void BM_VosKernelBuild(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(pipeline::GlareStage(plan_for(width, "vos")));
 }
 
-BENCHMARK_CAPTURE(BM_GlareFrame, vos_fft, std::string("vos"))
-    ->Arg(640)
-    ->Arg(1280)
-    ->Arg(1920)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
-BENCHMARK_CAPTURE(BM_GlareFrame, gaussian, std::string("gaussian"))
-    ->Arg(640)
-    ->Arg(1280)
-    ->Arg(1920)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
+void widths(benchmark::internal::Benchmark* b) {
+  b->Arg(640)->Arg(1280)->Arg(1920)->Unit(benchmark::kMillisecond)->UseRealTime();
+}
+
+BENCHMARK_CAPTURE(BM_GlareFrame, vos_fft, std::string("vos"))->Apply(widths);
+BENCHMARK_CAPTURE(BM_GlareFrame, vos_split2, std::string("split2"))->Apply(widths);
+BENCHMARK_CAPTURE(BM_GlareFrame, vos_split4, std::string("split4"))->Apply(widths);
+BENCHMARK_CAPTURE(BM_GlareFrame, gaussian, std::string("gaussian"))->Apply(widths);
 BENCHMARK(BM_VosKernelBuild)->Arg(640)->Arg(1920)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 
 }  // namespace

@@ -11,7 +11,7 @@ namespace eyestream::pipeline {
 
 namespace {
 
-constexpr int kW = 900, kH = 560, kLeft = 80, kRight = 30, kTop = 50, kBottom = 60;
+constexpr int kW = 900, kH = 560, kLeft = 80, kRight = 90, kTop = 50, kBottom = 60;
 
 void label(cv::Mat& img, const std::string& s, cv::Point at, double scale = 0.45) {
   cv::putText(img, s, at, cv::FONT_HERSHEY_SIMPLEX, scale, cv::Scalar(40, 40, 40), 1, cv::LINE_AA);

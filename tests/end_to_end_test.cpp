@@ -139,9 +139,13 @@ TEST_F(EndToEnd, QualityPresetsResolveAndExplicitOptionsWin) {
   const std::string out = out_ / "plan/v.mp4";
   auto r = test::run_eyestream("run " + inputs() + " -o " + out + " --quality fast --print-plan");
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(r.output.find("psf-model = gaussian"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("glare-engine = split"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("glare-tail-factor = 4"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("state-resolution = 0.25"), std::string::npos);
   EXPECT_NE(r.output.find("stages = "), std::string::npos);
+  EXPECT_NE(r.output.find("skipping = on"), std::string::npos);
+  r = test::run_eyestream("run " + inputs() + " -o " + out + " --quality fast --no-skip --print-plan");
+  EXPECT_NE(r.output.find("skipping = off"), std::string::npos) << r.output;
   r = test::run_eyestream("run " + inputs() + " -o " + out +
                           " --quality reference --state-resolution 0.5 --print-plan");
   EXPECT_NE(r.output.find("precision = double"), std::string::npos) << r.output;
