@@ -5,7 +5,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "io/staged_file.hpp"
+#include "io/png_file.hpp"
 
 namespace eyestream::pipeline {
 
@@ -78,11 +78,7 @@ void draw_bench_chart(const std::vector<BenchRow>& rows, const std::string& path
     cv::circle(img, {kLeft + 20, kTop + 20 + 22 * int(i)}, 6, colour, cv::FILLED, cv::LINE_AA);
     label(img, order[i], {kLeft + 32, kTop + 25 + 22 * int(i)});
   }
-  std::vector<unsigned char> png;
-  cv::imencode(".png", img, png);
-  io::StagedFile file(path);
-  io::write_all(file, png);
-  file.commit();
+  io::write_png(path, img);
 }
 
 }  // namespace eyestream::pipeline

@@ -5,7 +5,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "io/staged_file.hpp"
+#include "io/png_file.hpp"
 
 namespace eyestream::pipeline {
 
@@ -47,11 +47,7 @@ void write_tone_curves(const retina::ToneCurveParams& tone, const std::string& p
              cv::LINE_AA);
   cv::putText(img, "Naka-Rushton R(I) per adaptation level A; dots and dashes: the plateau M(A)", {left, 20},
               cv::FONT_HERSHEY_SIMPLEX, 0.5, axis);
-  std::vector<unsigned char> png;
-  cv::imencode(".png", img, png);
-  io::StagedFile file(path);
-  io::write_all(file, png);
-  file.commit();
+  io::write_png(path, img);
 }
 
 }  // namespace eyestream::pipeline

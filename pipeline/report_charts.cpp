@@ -11,6 +11,7 @@
 
 #include "io/delimited_table.hpp"
 #include "io/error.hpp"
+#include "io/png_file.hpp"
 #include "io/staged_file.hpp"
 
 namespace eyestream::pipeline {
@@ -204,11 +205,7 @@ void write_report_charts(const std::vector<ReportSeries>& series, const std::str
   char axis[64];
   std::snprintf(axis, sizeof(axis), "time (s), %.2f to %.2f", t0, t1);
   text(img, axis, {kWidth / 2 - 80, top + strip + 14}, 0.5);
-  std::vector<unsigned char> png;
-  cv::imencode(".png", img, png);
-  io::StagedFile file(png_path);
-  io::write_all(file, png);
-  file.commit();
+  io::write_png(png_path, img);
 }
 
 void draw_report_file(const std::string& csv_path, const std::string& png_path) {
