@@ -4,9 +4,10 @@
 //   K = K w            (near: full resolution, (2R+1)^2 pixels)
 //     + K (1 - w)      (far: kernels integrated over factor x factor pixel
 //                       footprints, on a frame reduced by that factor).
-// The far kernels are scaled so near + far hold exactly the energy of the
-// undivided kernel, and the upsampled tail keeps its block energies, so
-// the engine moves light without adding any. Near sources are scattered
+// The window is applied at pixel centres (near) and block centres (far),
+// so near + far hold the undivided kernel's energy to within 0.05 %
+// (tests/split_engine_test.cpp); the upsampled tail keeps its block
+// energies, so the engine moves light without adding any. Near sources are scattered
 // directly when the input is sparse (the excess over the display peak
 // usually is), else filtered; the far part goes through the FFT engine.
 #pragma once

@@ -22,11 +22,7 @@ BenchCase run_bench_case(const BenchScene& scene, const Settings& settings) {
     retina::encode_display(out.linear, 8, scene.frames[i].index, plan.encoding, code);
     c.encode_ms += lap_ms(clock);
     c.filter_ms += r.times.total();
-    c.stage_ms.glare_ms += r.times.glare_ms;
-    c.stage_ms.adaptation_ms += r.times.adaptation_ms;
-    c.stage_ms.retina_ms += r.times.retina_ms;
-    c.stage_ms.mesopic_ms += r.times.mesopic_ms;
-    c.stage_ms.afterimage_ms += r.times.afterimage_ms;
+    c.stage_ms += r.times;
     c.glare_frames += r.active.glare;
     c.retina_frames += r.active.retina;
     c.afterimage_frames += r.active.afterimages;
@@ -37,9 +33,9 @@ BenchCase run_bench_case(const BenchScene& scene, const Settings& settings) {
   }
   c.memory_mib = peak_resident_mib() - resident_before;
   const double n = std::max(c.frames, 1);
-  for (double* v : {&c.filter_ms, &c.encode_ms, &c.stage_ms.glare_ms, &c.stage_ms.adaptation_ms,
-                    &c.stage_ms.retina_ms, &c.stage_ms.mesopic_ms, &c.stage_ms.afterimage_ms})
-    *v /= n;
+  c.filter_ms /= n;
+  c.encode_ms /= n;
+  c.stage_ms *= 1.0 / n;
   c.bleached = eye.retina().state().bleached().clone();
   c.deficit = eye.retina().state().deficit().clone();
   c.calcium_max = eye.retina().state().calcium_max();

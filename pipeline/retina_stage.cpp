@@ -88,13 +88,12 @@ void RetinaStage::advance(const cv::Mat& rgb, const std::vector<GazeSegment>& se
   state_.soften(sigma_deg * plan_.pixels_per_degree * grid_.sites_per_pixel());
 }
 
-bool RetinaStage::catch_up() {
-  if (!(pending_dt_ > 0)) return false;
+void RetinaStage::catch_up() {
+  if (!(pending_dt_ > 0)) return;
   state_.step(last_stimulus_, retina::ToneCurve(last_curve_log_, plan_.tone), pending_dt_);
   const double sigma_deg = std::sqrt(plan_.retina.spread_deg2_per_s * pending_dt_);
   state_.soften(sigma_deg * plan_.pixels_per_degree * grid_.sites_per_pixel());
   pending_dt_ = 0.0;
-  return true;
 }
 
 bool RetinaStage::unchanged(const cv::Mat& stimulus, double curve_log) const {

@@ -64,7 +64,7 @@ class RetinaStage {
   // stepped; the time skipped is stepped in one exact step when the
   // stimulus changes (the step is exact for a constant stimulus, seed 001
   // eqs. 5 and 9, so one long step equals many short ones).
-  bool catch_up();
+  void catch_up();
   bool unchanged(const cv::Mat& stimulus, double curve_log) const;
   cv::Mat last_stimulus_;
   double last_curve_log_ = 0.0;

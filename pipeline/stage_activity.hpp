@@ -19,6 +19,15 @@ struct StageActivity {
 struct StageTimes {
   double glare_ms = 0, adaptation_ms = 0, retina_ms = 0, mesopic_ms = 0, afterimage_ms = 0;
   double total() const { return glare_ms + adaptation_ms + retina_ms + mesopic_ms + afterimage_ms; }
+  StageTimes& operator+=(const StageTimes& o) {
+    glare_ms += o.glare_ms, adaptation_ms += o.adaptation_ms, retina_ms += o.retina_ms;
+    mesopic_ms += o.mesopic_ms, afterimage_ms += o.afterimage_ms;
+    return *this;
+  }
+  StageTimes& operator*=(double k) {
+    glare_ms *= k, adaptation_ms *= k, retina_ms *= k, mesopic_ms *= k, afterimage_ms *= k;
+    return *this;
+  }
 };
 
 // Milliseconds since `start`, and restarts it.
