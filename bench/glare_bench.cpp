@@ -1,7 +1,7 @@
 // Glare cost per frame by engine (Google Benchmark; never asserts): the
-// exact Vos FFT engine, the split engine (tail at 1/2 and 1/4 resolution)
-// and seed 003's Gaussian, on a frame with lights above the display peak,
-// plus the one-time kernel build.
+// exact FFT engine (Vos and CIE PSFs), the split engine (tail at 1/2 and
+// 1/4 resolution) and seed 003's Gaussian, on a frame with lights above the
+// display peak, plus the one-time kernel build with and without flare lines.
 #include <benchmark/benchmark.h>
 
 #include "pipeline/glare_stage.hpp"
@@ -10,12 +10,14 @@ namespace {
 
 using namespace eyestream;
 
-// model: "vos" (exact), "split2", "split4" or "gaussian".
-pipeline::Plan plan_for(int width, const std::string& model) {
+// engine: "exact", "split2", "split4" or "gaussian"; model: "vos" or "cie".
+pipeline::Plan plan_for(int width, const std::string& engine, const std::string& model = "vos",
+                        bool flare_lines = true) {
   pipeline::Settings s;
-  s.psf_model = model == "gaussian" ? "gaussian" : "vos";
-  s.glare_engine = model.rfind("split", 0) == 0 ? "split" : "exact";
-  if (s.glare_engine == "split") s.glare_tail_factor = model.back() - '0';
+  s.psf_model = engine == "gaussian" ? "gaussian" : model;
+  s.flare_lines = flare_lines;
+  s.glare_engine = engine.rfind("split", 0) == 0 ? "split" : "exact";
+  if (s.glare_engine == "split") s.glare_tail_factor = engine.back() - '0';
   io::SourceInfo info;
   info.width = width;
   info.height = width * 9 / 16;
@@ -32,28 +34,36 @@ cv::Mat night_frame(int width) {
   return frame;
 }
 
-void BM_GlareFrame(benchmark::State& state, const std::string& model) {
+void BM_GlareFrame(benchmark::State& state, const std::string& engine, const std::string& model) {
   const int width = int(state.range(0));
-  const pipeline::GlareStage stage(plan_for(width, model));
+  const pipeline::GlareStage stage(plan_for(width, engine, model));
   const cv::Mat frame = night_frame(width);
   for (auto _ : state) benchmark::DoNotOptimize(stage.apply(frame, -1.0));
   state.SetItemsProcessed(state.iterations() * width * (width * 9 / 16));
 }
 
-void BM_VosKernelBuild(benchmark::State& state) {
+// The one-time kernel build (and FFT spectra) of the exact engine.
+void BM_KernelBuild(benchmark::State& state, const std::string& model, bool flare_lines) {
   const int width = int(state.range(0));
-  for (auto _ : state) benchmark::DoNotOptimize(pipeline::GlareStage(plan_for(width, "vos")));
+  for (auto _ : state) benchmark::DoNotOptimize(pipeline::GlareStage(plan_for(width, "exact", model, flare_lines)));
 }
 
 void widths(benchmark::internal::Benchmark* b) {
   b->Arg(640)->Arg(1280)->Arg(1920)->Unit(benchmark::kMillisecond)->UseRealTime();
 }
 
-BENCHMARK_CAPTURE(BM_GlareFrame, vos_fft, std::string("vos"))->Apply(widths);
-BENCHMARK_CAPTURE(BM_GlareFrame, vos_split2, std::string("split2"))->Apply(widths);
-BENCHMARK_CAPTURE(BM_GlareFrame, vos_split4, std::string("split4"))->Apply(widths);
-BENCHMARK_CAPTURE(BM_GlareFrame, gaussian, std::string("gaussian"))->Apply(widths);
-BENCHMARK(BM_VosKernelBuild)->Arg(640)->Arg(1920)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+void build_widths(benchmark::internal::Benchmark* b) {
+  b->Arg(640)->Arg(1920)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+}
+
+BENCHMARK_CAPTURE(BM_GlareFrame, vos_fft, std::string("exact"), std::string("vos"))->Apply(widths);
+BENCHMARK_CAPTURE(BM_GlareFrame, cie_fft, std::string("exact"), std::string("cie"))->Apply(widths);
+BENCHMARK_CAPTURE(BM_GlareFrame, vos_split2, std::string("split2"), std::string("vos"))->Apply(widths);
+BENCHMARK_CAPTURE(BM_GlareFrame, vos_split4, std::string("split4"), std::string("vos"))->Apply(widths);
+BENCHMARK_CAPTURE(BM_GlareFrame, gaussian, std::string("gaussian"), std::string("vos"))->Apply(widths);
+BENCHMARK_CAPTURE(BM_KernelBuild, vos_flare_lines, std::string("vos"), true)->Apply(build_widths);
+BENCHMARK_CAPTURE(BM_KernelBuild, vos_plain, std::string("vos"), false)->Apply(build_widths);
+BENCHMARK_CAPTURE(BM_KernelBuild, cie_flare_lines, std::string("cie"), true)->Apply(build_widths);
 
 }  // namespace
 

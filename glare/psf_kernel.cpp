@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "glare/color_matching.hpp"
+#include "glare/flare_lines.hpp"
 #include "glare/vos_psf.hpp"
 
 namespace eyestream::glare {
@@ -39,7 +40,9 @@ cv::Vec3d halo_at(const std::vector<cv::Vec3d>& table, double t) {
 
 }  // namespace
 
-ComponentKernels build_component_kernels(int w, int h, double ppd) {
+ComponentKernels build_component_kernels(int w, int h, double ppd, const EyeOptics& optics) {
+  const std::function<double(double)> core = optics.component(0), inner = optics.component(1),
+                                      outer = optics.component(2);
   ComponentKernels k;
   k.pixels_per_degree = ppd;
   const cv::Size size(2 * w - 1, 2 * h - 1);
@@ -60,9 +63,9 @@ ComponentKernels build_component_kernels(int w, int h, double ppd) {
         for (int sy = 0; sy < n; ++sy)
           for (int sx = 0; sx < n; ++sx) {
             const double t = std::hypot(dx + (sx + 0.5) / n - 0.5, dy + (sy + 0.5) / n - 0.5) / ppd;
-            f0 += vos_f0(t);
-            f1 += vos_f1(t);
-            f2 += vos_f2(t);
+            f0 += core(t);
+            f1 += inner(t);
+            f2 += outer(t);
             f3 += halo_at(halo, t);
           }
         // Mean density per steradian over the footprint, times the pixel's solid angle.
@@ -73,6 +76,12 @@ ComponentKernels build_component_kernels(int w, int h, double ppd) {
         for (int c = 0; c < 3; ++c) k.halo[c].at<double>(y, x) = f3[c] * weight;
       }
   });
+  if (optics.flare_lines()) {
+    const double frame_ppd = optics.frame_pixels_per_degree();
+    apply_flare_lines(flare_lines(optics.viewer(), FlareKind::corona), ppd, {&k.inner, &k.outer}, frame_ppd);
+    apply_flare_lines(flare_lines(optics.viewer(), FlareKind::halo), ppd, {&k.halo[0], &k.halo[1], &k.halo[2]},
+                      frame_ppd);
+  }
   return k;
 }
 

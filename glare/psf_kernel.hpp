@@ -1,4 +1,4 @@
-// The eye's PSF on the pixel grid: one kernel per Vos component, each
+// The eye's PSF on the pixel grid: one kernel per PSF component, each
 // integrated over every pixel's footprint (seed 000 sec. 3.2, seed 003;
 // MODEL.md 1.3). The frame's kernel is the weighted sum of the components
 // (psf_weights.hpp), so any weights (age, adaptation regime, pupil) combine
@@ -14,6 +14,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "glare/eye_optics.hpp"
 #include "glare/psf_weights.hpp"
 
 namespace eyestream::glare {
@@ -35,7 +36,12 @@ struct ComponentKernels {
 // deg), at the pixel centre elsewhere. The halo of channel c mixes f3 over
 // 50 wavelengths from 400 to 700 nm weighted by the channel's colour-
 // matching function (color_matching.hpp): blue rings sit inside red ones.
-ComponentKernels build_component_kernels(int frame_width, int frame_height, double pixels_per_degree);
+// The core, inner and outer kernels hold the optics' components (Vos f0,
+// f1, f2, or the CIE scattered part in the inner slot, eye_optics.hpp);
+// with flare lines on, the inner, outer and halo kernels carry them
+// (flare_lines.hpp) with every 1 px ring's energy unchanged.
+ComponentKernels build_component_kernels(int frame_width, int frame_height, double pixels_per_degree,
+                                         const EyeOptics& optics = EyeOptics());
 
 // The combined kernel of channel c for given weights (sum of weighted
 // components), CV_64F; it sums to the PSF's energy within the frame's reach.

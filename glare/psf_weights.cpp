@@ -25,8 +25,8 @@ PsfWeights psf_weights(const ViewerProfile& viewer, double a, double pupil_mm) {
                  : a < photopic ? mix(kMesopic, kPhotopic, (a - middle) / (photopic - middle))
                                 : kPhotopic;
   const double aging = 6.9e-9 * std::pow(viewer.age_years, 4.0);  // seed 000 eq. 10
-  w.core -= aging;
-  w.outer += aging;
+  w.core -= aging + viewer.haze;  // haze: the viewer's share of the core moved into the bloom
+  w.outer += aging + viewer.haze;
   const double f = std::clamp((pupil_mm - 2.5) / 1.0, 0.0, 1.0);
   const double halo = w.halo * f * f * (3.0 - 2.0 * f);
   w.core += w.halo - halo;

@@ -41,12 +41,12 @@ struct Source {
 
 }  // namespace
 
-SplitConvolver::SplitConvolver(int width, int height, double ppd, int factor)
+SplitConvolver::SplitConvolver(int width, int height, double ppd, int factor, const EyeOptics& optics)
     : width_(width), height_(height), factor_(std::max(factor, 2)), radius_(8 * factor_) {
   low_width_ = (width + factor_ - 1) / factor_;
   low_height_ = (height + factor_ - 1) / factor_;
-  near_ = build_component_kernels(radius_ + 1, radius_ + 1, ppd);
-  ComponentKernels far = build_component_kernels(low_width_, low_height_, ppd / factor_);
+  near_ = build_component_kernels(radius_ + 1, radius_ + 1, ppd, optics);
+  ComponentKernels far = build_component_kernels(low_width_, low_height_, ppd / factor_, optics);
   std::vector<cv::Mat*> n = components(near_), f = components(far);
   for (size_t i = 0; i < n.size(); ++i) {
     apply_window(*n[i], 1.0, radius_, false);

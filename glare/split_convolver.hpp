@@ -24,7 +24,7 @@ class SplitConvolver {
  public:
   // For width x height frames at pixels_per_degree; `factor` >= 2 is the
   // tail's reduction, R = 8 factor pixels.
-  SplitConvolver(int width, int height, double pixels_per_degree, int factor);
+  SplitConvolver(int width, int height, double pixels_per_degree, int factor, const EyeOptics& optics = EyeOptics());
   ~SplitConvolver();
 
   // As FftConvolver::convolve.

@@ -1,16 +1,31 @@
-// The viewer's optics: who is looking and how wide their pupil is at an
-// adaptation level (MODEL.md 1.2).
+// The viewer: who is looking, in one place (MODEL.md 1.2). Everything the
+// eye's optics depend on that is not the scene: age, eye pigmentation,
+// glasses, haze, how the pupil is modelled, and the seed of the flare-line
+// pattern of this viewer's lens.
 #pragma once
+
+#include <cstdint>
 
 namespace eyestream::glare {
 
-struct ViewerProfile {
-  double age_years = 25.0;
+enum class PupilModel {
+  moon_spencer,   // seed 000: luminance only
+  watson_yellott  // Watson and Yellott 2012: luminance, field area and age
 };
 
-// Moon and Spencer pupil diameter (mm) for a field luminance of 10^log_l
-// cd/m^2: D = 4.9 - 3 tanh(0.4 (log10 L + 1)) (seed 000; MODEL.md 1.2):
-// about 7.9 mm in the dark, 2.9 mm at 10 cd/m^2, 1.9 mm in sunlight.
-double pupil_diameter_mm(double log_l);
+struct ViewerProfile {
+  double age_years = 25.0;
+  // Ocular pigmentation p of CIE 146:2002 (0 very dark eyes, 0.5 brown,
+  // 1 light Caucasian, 1.2 very light blue): light through the eye wall.
+  // Only the cie PSF model has a term for it.
+  double pigmentation = 0.5;
+  bool glasses = false;  // (myopic) glasses: more and longer flare lines (seed 004)
+  // Share of the unscattered core moved into the wide 1/t^2 bloom (f2) by
+  // haze or fog between the light and the eye, 0..0.5 (seed 004).
+  double haze = 0.0;
+  PupilModel pupil = PupilModel::moon_spencer;
+  double pupil_field_deg = 0.0;  // Watson-Yellott: adapting field diameter; 0: the frame's own field
+  std::int64_t seed = 1;         // the flare-line pattern (fixed for this viewer)
+};
 
 }  // namespace eyestream::glare

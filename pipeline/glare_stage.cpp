@@ -2,21 +2,19 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "glare/psf_weights.hpp"
 #include "glare/veiling_luminance.hpp"
-#include "glare/viewer.hpp"
 #include "retina/luminance.hpp"
 
 namespace eyestream::pipeline {
 
-GlareStage::GlareStage(const Plan& plan) : plan_(plan) {
+GlareStage::GlareStage(const Plan& plan) : plan_(plan), optics_(plan.glare.optics(plan.pixels_per_degree)) {
   if (plan.glare.gaussian) return;  // no kernels: a separable blur does the work
   // The full kernels also give the report its veil (veiling_luminance.hpp).
   if (plan.glare.tail_factor <= 1 || plan.report)
-    kernels_ = glare::build_component_kernels(plan.width, plan.height, plan.pixels_per_degree);
+    kernels_ = glare::build_component_kernels(plan.width, plan.height, plan.pixels_per_degree, optics_);
   if (plan.glare.tail_factor > 1)
     split_ = std::make_unique<glare::SplitConvolver>(plan.width, plan.height, plan.pixels_per_degree,
-                                                     plan.glare.tail_factor);
+                                                     plan.glare.tail_factor, optics_);
   else
     convolver_ = std::make_unique<glare::FftConvolver>(kernels_);
 }
@@ -24,9 +22,8 @@ GlareStage::GlareStage(const Plan& plan) : plan_(plan) {
 std::optional<double> GlareStage::veil_at(const cv::Mat& luminance, double adaptation_log, double x, double y,
                                           double exclusion_deg) const {
   if (plan_.glare.gaussian || kernels_.core.empty()) return std::nullopt;
-  const glare::PsfWeights w =
-      glare::psf_weights(plan_.glare.viewer, adaptation_log, glare::pupil_diameter_mm(adaptation_log));
-  return glare::veiling_luminance(luminance, kernels_, w, x, y, exclusion_deg * plan_.pixels_per_degree);
+  return glare::veiling_luminance(luminance, kernels_, optics_.weights(adaptation_log), x, y,
+                                  exclusion_deg * plan_.pixels_per_degree);
 }
 
 cv::Mat GlareStage::spread(const cv::Mat& rgb, double adaptation_log) const {
@@ -37,8 +34,7 @@ cv::Mat GlareStage::spread(const cv::Mat& rgb, double adaptation_log) const {
     cv::GaussianBlur(rgb, out, cv::Size(0, 0), sigma, sigma, cv::BORDER_CONSTANT);
     return out;
   }
-  const glare::PsfWeights w =
-      glare::psf_weights(plan_.glare.viewer, adaptation_log, glare::pupil_diameter_mm(adaptation_log));
+  const glare::PsfWeights w = optics_.weights(adaptation_log);
   return split_ ? split_->convolve(rgb, w) : convolver_->convolve(rgb, w);
 }
 

@@ -32,7 +32,8 @@ class GlareStage {
   std::optional<double> veil_at(const cv::Mat& luminance, double adaptation_log, double x, double y,
                                 double exclusion_deg) const;
 
-  // The Vos component kernels (empty with the Gaussian model).
+  // The PSF's component kernels (empty with the Gaussian model, and with
+  // the split engine unless a report needs them).
   const glare::ComponentKernels& kernels() const { return kernels_; }
 
  private:
@@ -40,6 +41,7 @@ class GlareStage {
   cv::Mat spread(const cv::Mat& rgb, double adaptation_log) const;
 
   const Plan plan_;
+  const glare::EyeOptics optics_;
   glare::ComponentKernels kernels_;
   std::unique_ptr<glare::FftConvolver> convolver_;     // exact engine
   std::unique_ptr<glare::SplitConvolver> split_;       // or the split one

@@ -39,7 +39,12 @@ Plan compile_plan(const Settings& s, const io::SourceInfo& source) {
   p.glare.gaussian = s.psf_model == "gaussian";
   p.glare.tail_factor = s.glare_engine == "exact" ? 1 : s.glare_tail_factor;
   p.glare.display_peak_cd_m2 = s.display_peak_cd_m2;
+  p.glare.model = s.psf_model == "cie" ? glare::PsfModel::cie : glare::PsfModel::vos;
+  p.glare.flare_lines = s.flare_lines;
+  p.glare.frame_area_deg2 = (p.width / p.pixels_per_degree) * (p.height / p.pixels_per_degree);
   p.glare.viewer = s.viewer;
+  p.glare.viewer.pupil =
+      s.pupil_model == "watson-yellott" ? glare::PupilModel::watson_yellott : glare::PupilModel::moon_spencer;
   p.mesopic.enabled = s.mesopic;
   p.mesopic.colour = s.mesopic_colour;
   p.mesopic.acuity = s.acuity_loss;
@@ -59,11 +64,18 @@ std::string Plan::describe() const {
     << " log10/s\n"
     << "glare = " << (glare.enabled ? (glare.full ? "full image" : "excess over the display peak") : "off")
     << (glare.gaussian ? ", Gaussian kernel (sigma 0.34 deg)"
-        : glare.tail_factor > 1
-            ? ", Vos PSF, split engine (tail at 1/" + std::to_string(glare.tail_factor) + " resolution)"
-            : ", Vos PSF, exact FFT engine")
-    << ", viewer age "
-    << glare.viewer.age_years << " years, display peak " << glare.display_peak_cd_m2 << " cd/m^2\n"
+        : std::string(glare.model == glare::PsfModel::cie ? ", CIE 146 scatter with Vos core and halo"
+                                                           : ", Vos PSF") +
+              (glare.flare_lines ? " with flare lines" : "") +
+              (glare.tail_factor > 1
+                   ? ", split engine (tail at 1/" + std::to_string(glare.tail_factor) + " resolution)"
+                   : ", exact FFT engine"))
+    << ", display peak " << glare.display_peak_cd_m2 << " cd/m^2\n"
+    << "viewer = age " << glare.viewer.age_years << " years"
+    << (glare.model == glare::PsfModel::cie ? ", pigmentation " + std::to_string(glare.viewer.pigmentation) : "")
+    << (glare.viewer.glasses ? ", glasses" : "") << ", haze " << glare.viewer.haze << ", pupil "
+    << (glare.viewer.pupil == glare::PupilModel::watson_yellott ? "Watson-Yellott" : "Moon-Spencer")
+    << ", flare-line seed " << glare.viewer.seed << "\n"
     << "retina state = " << retina.sites_per_pixel << " sites/px, " << (retina.double_precision ? "double" : "float")
     << ", sub-step tolerance " << retina.substep_tolerance_px << " px\n"
     << "afterimages = " << (retina.afterimages.bleaching ? "bleaching" : "no bleaching") << ", "

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "glare/viewer.hpp"
+#include "glare/eye_optics.hpp"
 #include "io/frame_source.hpp"
 #include "pipeline/settings.hpp"
 #include "retina/acuity_loss.hpp"
@@ -33,12 +33,19 @@ struct MesopicPlan {
 
 struct GlarePlan {
   bool enabled = true;
-  bool gaussian = false;             // seed 003's cheap kernel instead of the Vos PSF
+  bool gaussian = false;             // seed 003's cheap kernel instead of the eye's PSF
+  glare::PsfModel model = glare::PsfModel::vos;
+  bool flare_lines = true;
+  double frame_area_deg2 = 0.0;      // the frame's angular area (the pupil's default field)
   int tail_factor = 1;               // Vos PSF: 1 exact FFT engine; >= 2 split engine, tail reduced this much
   double gaussian_sigma_deg = 0.34;  // seed 003
   bool full = false;
   double display_peak_cd_m2 = 100.0;
   glare::ViewerProfile viewer;
+
+  glare::EyeOptics optics(double pixels_per_degree) const {
+    return glare::EyeOptics(viewer, model, flare_lines, frame_area_deg2, pixels_per_degree);
+  }
 };
 
 struct Plan {

@@ -7,11 +7,10 @@
 #include <sstream>
 
 #include "glare/psf_kernel.hpp"
-#include "glare/psf_weights.hpp"
-#include "glare/viewer.hpp"
 #include "io/error.hpp"
 #include "io/exr_file.hpp"
 #include "io/staged_file.hpp"
+#include "pipeline/plan.hpp"
 
 namespace eyestream::pipeline {
 
@@ -27,18 +26,35 @@ std::string PsfSummary::text() const {
 
 PsfSummary write_psf(const Settings& s, const PsfRequest& r) {
   if (r.output.empty()) throw UsageError("psf: -o FILE.exr is required");
-  const double ppd = pixels_per_degree(s.geometry, r.width, r.height);
-  const glare::ComponentKernels k = glare::build_component_kernels(r.width, r.height, ppd);
+  io::SourceInfo frame;
+  frame.width = r.width;
+  frame.height = r.height;
+  frame.frames_per_second = 30.0;
+  const Plan plan = compile_plan(s, frame);
+  const double ppd = plan.pixels_per_degree;
+  const glare::EyeOptics optics = plan.glare.optics(ppd);
   PsfSummary summary;
-  summary.pupil_mm = glare::pupil_diameter_mm(r.adaptation_log);
-  const glare::PsfWeights w = glare::psf_weights(s.viewer, r.adaptation_log, summary.pupil_mm);
+  summary.pupil_mm = optics.pupil_mm(r.adaptation_log);
   std::vector<cv::Mat> channels;
-  for (int c = 0; c < 3; ++c) {
-    cv::Mat kc;
-    glare::combined_kernel(k, w, c).convertTo(kc, CV_32F);
-    channels.push_back(kc);
+  const cv::Point centre(r.width - 1, r.height - 1);
+  if (plan.glare.gaussian) {
+    // seed 003's kernel, sigma in degrees, unit sum within the frame's reach.
+    cv::Mat g(2 * r.height - 1, 2 * r.width - 1, CV_32F);
+    const double sigma = plan.glare.gaussian_sigma_deg * ppd;
+    g.forEach<float>([&](float& v, const int* p) {
+      v = float(std::exp(-(std::pow(p[1] - centre.x, 2) + std::pow(p[0] - centre.y, 2)) / (2 * sigma * sigma)));
+    });
+    g /= cv::sum(g)[0];
+    channels.assign(3, g);
+  } else {
+    const glare::ComponentKernels k = glare::build_component_kernels(r.width, r.height, ppd, optics);
+    const glare::PsfWeights w = optics.weights(r.adaptation_log);
+    for (int c = 0; c < 3; ++c) {
+      cv::Mat kc;
+      glare::combined_kernel(k, w, c).convertTo(kc, CV_32F);
+      channels.push_back(kc);
+    }
   }
-  const cv::Point centre = k.centre();
   const double radii[3] = {0.05, 1.0, 10.0};
   for (int y = 0; y < channels[1].rows; ++y)
     for (int x = 0; x < channels[1].cols; ++x) {

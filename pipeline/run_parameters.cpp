@@ -61,8 +61,12 @@ ParamSet run_parameters(Settings& s) {
   // Optics.
   const std::string optics = "Glare (the viewer's optics)";
   set.add(flag("glare", "the eye's point-spread function before the retina", optics, &s.glare));
-  set.add(choice("psf-model", "the eye's PSF (vos, seed 000) or the cheap Gaussian of seed 003 (gaussian)", optics,
-                 &s.psf_model, {"vos", "gaussian"}));
+  set.add(choice("psf-model",
+                 "the eye's PSF: vos (seed 000), cie (CIE 146:2002 scatter with age and pigmentation, Vos core and "
+                 "halo) or the cheap Gaussian of seed 003 (gaussian)",
+                 optics, &s.psf_model, {"vos", "cie", "gaussian"}));
+  set.add(flag("flare-lines", "fine radial streaks in the corona and the halo, fixed per --viewer-seed", optics,
+               &s.flare_lines));
   set.add(choice("glare-engine",
                  "Vos PSF convolution: exact (full-resolution FFT) or split (sharp centre at full resolution, tail "
                  "reduced by --glare-tail-factor)",
@@ -75,6 +79,20 @@ ParamSet run_parameters(Settings& s) {
       number("display-peak", "cd/m^2", "peak luminance of the display, L_dmax", view, &s.display_peak_cd_m2, 1, 1e5));
   set.add(number("viewer-age", "years", "the viewer's age: scattered light grows as age^4", optics, &s.viewer.age_years,
                  1, 100));
+  set.add(number("viewer-pigmentation", "",
+                 "ocular pigmentation p of CIE 146 (0 very dark, 0.5 brown, 1 light, 1.2 very light blue eyes); "
+                 "cie model only",
+                 optics, &s.viewer.pigmentation, 0, 1.2));
+  set.add(flag("viewer-glasses", "the viewer wears (myopic) glasses: more and longer flare lines", optics,
+               &s.viewer.glasses));
+  set.add(number("viewer-haze", "", "share of the unscattered light that haze or fog turns into wide bloom", optics,
+                 &s.viewer.haze, 0, 0.5));
+  set.add(number("viewer-seed", "", "the viewer's flare-line pattern", optics, &s.viewer.seed, 0, 9.007199254740992e15));
+  set.add(choice("pupil-model",
+                 "pupil from adaptation luminance: moon-spencer (seed 000) or watson-yellott (with age and field size)",
+                 optics, &s.pupil_model, {"moon-spencer", "watson-yellott"}));
+  set.add(number("pupil-field", "deg", "watson-yellott: diameter of the adapting field; 0: the frame's field", optics,
+                 &s.viewer.pupil_field_deg, 0, 180));
   // Retina state and afterimages.
   const std::string ai = "Afterimages (retina state)";
   const char* cone[3] = {"l", "m", "s"};

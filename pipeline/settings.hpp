@@ -48,7 +48,9 @@ struct Settings {
   // Optics.
   glare::ViewerProfile viewer;
   bool glare = true;
-  std::string psf_model = "vos";      // vos: seed 000's PSF; gaussian: seed 003's sigma = 0.34 deg kernel
+  std::string psf_model = "vos";      // vos: seed 000's PSF; cie: CIE 146 scatter; gaussian: seed 003's kernel
+  std::string pupil_model = "moon-spencer";  // or watson-yellott (glare/pupil.hpp)
+  bool flare_lines = true;            // radial streaks of corona and halo (glare/flare_lines.hpp)
   std::string glare_engine = "exact"; // Vos PSF: exact (full-resolution FFT) or split (tail at reduced resolution)
   int glare_tail_factor = 4;          // the split engine's reduction of the tail
   std::string glare_mode = "excess";  // excess: spread the light above the display peak; full: everything

@@ -7,7 +7,7 @@
 #include "glare/fft_convolver.hpp"
 #include "glare/psf_kernel.hpp"
 #include "glare/psf_weights.hpp"
-#include "glare/viewer.hpp"
+#include "glare/pupil.hpp"
 #include "glare/vos_psf.hpp"
 #include "pipeline/glare_stage.hpp"
 #include "tests/test_support.hpp"
@@ -70,9 +70,9 @@ TEST(Glare, ScatterBeyondFiveHundredthsOfADegreeGrowsWithAge) {
 }
 
 TEST(Glare, PupilIsAboutThreeMillimetresAtTenCandelas) {
-  EXPECT_NEAR(pupil_diameter_mm(1.0), 3.0, 0.15);
-  EXPECT_GT(pupil_diameter_mm(-4.0), 7.0);
-  EXPECT_LT(pupil_diameter_mm(5.0), 2.0);
+  EXPECT_NEAR(moon_spencer_pupil_mm(1.0), 3.0, 0.15);
+  EXPECT_GT(moon_spencer_pupil_mm(-4.0), 7.0);
+  EXPECT_LT(moon_spencer_pupil_mm(5.0), 2.0);
 }
 
 // Radial profile of a kernel (mean over rings one pixel wide).
@@ -93,7 +93,7 @@ std::vector<double> radial(const cv::Mat& k) {
 TEST(Glare, HaloRingNearThreeDegreesOnlyWhenThePupilIsWide) {
   const ComponentKernels& k = kernels();
   auto profile = [&](double a, int c) {
-    return radial(combined_kernel(k, psf_weights(ViewerProfile{}, a, pupil_diameter_mm(a)), c));
+    return radial(combined_kernel(k, psf_weights(ViewerProfile{}, a, moon_spencer_pupil_mm(a)), c));
   };
   const std::vector<double> dark = profile(-3.0, 1), bright = profile(3.0, 1);
   const size_t ring = size_t(std::lround(3.0 * kPpd));
@@ -120,7 +120,7 @@ TEST(Glare, HaloRingNearThreeDegreesOnlyWhenThePupilIsWide) {
 TEST(Glare, FftEngineAddsNoLightAndMovesItAcrossTheFrame) {
   const ComponentKernels& k = kernels();
   const FftConvolver engine(k);
-  const PsfWeights w = psf_weights(ViewerProfile{}, -1.0, pupil_diameter_mm(-1.0));
+  const PsfWeights w = psf_weights(ViewerProfile{}, -1.0, moon_spencer_pupil_mm(-1.0));
   cv::Mat scene = cv::Mat::zeros(kH, kW, CV_32FC3);
   const cv::Point source(3, kH / 2);  // at the left edge
   scene.at<cv::Vec3f>(source) = cv::Vec3f(1e6f, 1e6f, 1e6f);

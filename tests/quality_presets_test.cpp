@@ -3,6 +3,8 @@
 // no preset's output depends on the thread count.
 #include <gtest/gtest.h>
 
+#include <iostream>
+
 #include "pipeline/bench_case.hpp"
 #include "pipeline/bench_scene.hpp"
 #include "pipeline/quality_presets.hpp"
@@ -23,8 +25,9 @@ struct Bound {
 };
 
 // The documented bounds (quality_presets.hpp) on 24 frames of the night
-// drive and of the dusk scene at 256x144. Measured: balanced p99 0.64
-// (night drive) and 1.18 (dusk), fast 1.16 and 2.58.
+// drive and of the dusk scene at 256x144. Measured (flare lines on; the
+// split engine draws the tail's lines at its reduced resolution): balanced
+// p99 1.41 (night drive) and 1.19 (dusk), fast 1.44 and 2.6.
 TEST(QualityPresets, EachPresetStaysWithinItsErrorBoundAgainstReference) {
   for (const std::string scene_name : {"night-drive", "dusk"}) {
     const BenchScene scene = load_bench_scene(scene_name, 256, 144, 24);
@@ -32,6 +35,7 @@ TEST(QualityPresets, EachPresetStaysWithinItsErrorBoundAgainstReference) {
     for (const Bound& b : {Bound{"balanced", kBalancedDe2000P99}, Bound{"fast", kFastDe2000P99}}) {
       const ReferenceError e = error_against(reference, run_bench_case(scene, preset(b.preset)));
       EXPECT_LE(e.de_p99, b.de_p99) << scene_name << ", " << b.preset;
+      std::cout << scene_name << ", " << b.preset << ": p99 CIEDE2000 " << e.de_p99 << "\n";
       EXPECT_GT(e.de_max, 0.0) << scene_name << ", " << b.preset << " differs from reference somewhere";
     }
   }
