@@ -55,6 +55,37 @@ Plan compile_plan(const Settings& s, const io::SourceInfo& source) {
   return p;
 }
 
+namespace {
+
+std::string describe_glare(const GlarePlan& g) {
+  std::ostringstream o;
+  o << (g.enabled ? (g.full ? "full image" : "excess over the display peak") : "off");
+  if (g.gaussian) {
+    o << ", Gaussian kernel (sigma " << g.gaussian_sigma_deg << " deg)";
+  } else {
+    o << (g.model == glare::PsfModel::cie ? ", CIE 146 scatter with Vos core and halo" : ", Vos PSF")
+      << (g.flare_lines ? " with flare lines" : "");
+    if (g.tail_factor > 1)
+      o << ", split engine (tail at 1/" << g.tail_factor << " resolution)";
+    else
+      o << ", exact FFT engine";
+  }
+  o << ", display peak " << g.display_peak_cd_m2 << " cd/m^2";
+  return o.str();
+}
+
+std::string describe_viewer(const GlarePlan& g) {
+  std::ostringstream o;
+  o << "age " << g.viewer.age_years << " years";
+  if (g.model == glare::PsfModel::cie) o << ", pigmentation " << g.viewer.pigmentation;
+  o << (g.viewer.glasses ? ", glasses" : "") << ", haze " << g.viewer.haze << ", pupil "
+    << (g.viewer.pupil == glare::PupilModel::watson_yellott ? "Watson-Yellott" : "Moon-Spencer")
+    << ", flare-line seed " << g.viewer.seed;
+  return o.str();
+}
+
+}  // namespace
+
 std::string Plan::describe() const {
   std::ostringstream o;
   o << "frame = " << width << "x" << height << " at " << frames_per_second << " fps\n"
@@ -62,20 +93,8 @@ std::string Plan::describe() const {
     << "adaptation patch = " << 2 * patch_half_px << " px\n"
     << "adaptation rates = +" << adaptation.rate_up_log_per_s << " / -" << adaptation.rate_down_log_per_s
     << " log10/s\n"
-    << "glare = " << (glare.enabled ? (glare.full ? "full image" : "excess over the display peak") : "off")
-    << (glare.gaussian ? ", Gaussian kernel (sigma 0.34 deg)"
-        : std::string(glare.model == glare::PsfModel::cie ? ", CIE 146 scatter with Vos core and halo"
-                                                           : ", Vos PSF") +
-              (glare.flare_lines ? " with flare lines" : "") +
-              (glare.tail_factor > 1
-                   ? ", split engine (tail at 1/" + std::to_string(glare.tail_factor) + " resolution)"
-                   : ", exact FFT engine"))
-    << ", display peak " << glare.display_peak_cd_m2 << " cd/m^2\n"
-    << "viewer = age " << glare.viewer.age_years << " years"
-    << (glare.model == glare::PsfModel::cie ? ", pigmentation " + std::to_string(glare.viewer.pigmentation) : "")
-    << (glare.viewer.glasses ? ", glasses" : "") << ", haze " << glare.viewer.haze << ", pupil "
-    << (glare.viewer.pupil == glare::PupilModel::watson_yellott ? "Watson-Yellott" : "Moon-Spencer")
-    << ", flare-line seed " << glare.viewer.seed << "\n"
+    << "glare = " << describe_glare(glare) << "\n"
+    << "viewer = " << describe_viewer(glare) << "\n"
     << "retina state = " << retina.sites_per_pixel << " sites/px, " << (retina.double_precision ? "double" : "float")
     << ", sub-step tolerance " << retina.substep_tolerance_px << " px\n"
     << "afterimages = " << (retina.afterimages.bleaching ? "bleaching" : "no bleaching") << ", "
