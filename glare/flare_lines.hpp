@@ -35,7 +35,11 @@ struct FlareLine {
 struct FlareLineSet {
   std::vector<FlareLine> lines;  // sorted by angle
   double width_deg = 0.02;       // half width across a line (at least 1.5 frame pixels when drawn)
-  double contrast = 0.9;         // share of the PSF carried by the lines; the rest stays smooth
+  // The pattern is (1 - contrast) + contrast S, S the sum of the lines
+  // (each up to `strength`), before each ring is rescaled: where lines are
+  // dense they carry most of the light, where they are sparse (far out) the
+  // smooth floor does.
+  double contrast = 0.9;
 };
 
 enum class FlareKind { corona, halo };
