@@ -4,9 +4,9 @@
 // by ring (1 px rings about the centre) so that each ring keeps the energy
 // it had: the streaks add detail without changing the PSF's radial profile
 // or its total. Within 3 pixels of the centre, where every line overlaps,
-// the PSF is left smooth. The corona (f1, f2) and the halo (f3) get two independent
-// sets. The pattern belongs to the viewer's lens: it is a pure function of
-// the viewer's seed, the same on every frame and every run.
+// the PSF is left smooth. The corona (f1, f2) and the halo (f3) get two
+// independent sets. The pattern belongs to the viewer's lens: it is a pure
+// function of the viewer's seed, the same on every frame and every run.
 //
 // Line drawing follows seed 002: angles jittered within equal sectors,
 // lengths (0.2 + u) of the longest, clamped to it, intensity falling as

@@ -16,7 +16,8 @@ double watson_yellott_pupil_mm(double l, double area, double age, int eyes) {
 
 double pupil_mm(const ViewerProfile& viewer, double log_l, double frame_area_deg2) {
   if (viewer.pupil == PupilModel::moon_spencer) return moon_spencer_pupil_mm(log_l);
-  const double area = viewer.pupil_field_deg > 0 ? M_PI * std::pow(viewer.pupil_field_deg / 2.0, 2.0) : frame_area_deg2;
+  const double area =
+      viewer.pupil_field_deg > 0 ? M_PI * std::pow(viewer.pupil_field_deg / 2.0, 2.0) : frame_area_deg2;
   return watson_yellott_pupil_mm(std::pow(10.0, log_l), area, viewer.age_years);
 }
 

@@ -88,7 +88,7 @@ void EyeSimulator::fill_glare_report(const cv::Mat& scene, const GazeSegment& ga
   double peak;
   cv::minMaxLoc(luminance, nullptr, &peak);
   r.peak_cd_m2 = peak;
-  r.pupil_mm = glare::pupil_mm(plan_.glare.viewer, *adaptation_, plan_.glare.frame_area_deg2);
+  r.pupil_mm = glare::pupil_mm(plan_.glare.viewer, *adaptation_, plan_.frame_area_deg2());
   const std::optional<TargetLuminance> target = measure_target(luminance, target_mask);
   if (target) {
     r.target_cd_m2 = target->target_cd_m2;

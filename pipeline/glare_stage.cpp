@@ -7,7 +7,7 @@
 
 namespace eyestream::pipeline {
 
-GlareStage::GlareStage(const Plan& plan) : plan_(plan), optics_(plan.glare.optics(plan.pixels_per_degree)) {
+GlareStage::GlareStage(const Plan& plan) : plan_(plan), optics_(plan.eye_optics()) {
   if (plan.glare.gaussian) return;  // no kernels: a separable blur does the work
   // The full kernels also give the report its veil (veiling_luminance.hpp).
   if (plan.glare.tail_factor <= 1 || plan.report)

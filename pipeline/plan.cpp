@@ -41,7 +41,6 @@ Plan compile_plan(const Settings& s, const io::SourceInfo& source) {
   p.glare.display_peak_cd_m2 = s.display_peak_cd_m2;
   p.glare.model = s.psf_model == "cie" ? glare::PsfModel::cie : glare::PsfModel::vos;
   p.glare.flare_lines = s.flare_lines;
-  p.glare.frame_area_deg2 = (p.width / p.pixels_per_degree) * (p.height / p.pixels_per_degree);
   p.glare.viewer = s.viewer;
   p.glare.viewer.pupil =
       s.pupil_model == "watson-yellott" ? glare::PupilModel::watson_yellott : glare::PupilModel::moon_spencer;

@@ -36,16 +36,11 @@ struct GlarePlan {
   bool gaussian = false;             // seed 003's cheap kernel instead of the eye's PSF
   glare::PsfModel model = glare::PsfModel::vos;
   bool flare_lines = true;
-  double frame_area_deg2 = 0.0;      // the frame's angular area (the pupil's default field)
   int tail_factor = 1;               // Vos PSF: 1 exact FFT engine; >= 2 split engine, tail reduced this much
   double gaussian_sigma_deg = 0.34;  // seed 003
   bool full = false;
   double display_peak_cd_m2 = 100.0;
   glare::ViewerProfile viewer;
-
-  glare::EyeOptics optics(double pixels_per_degree) const {
-    return glare::EyeOptics(viewer, model, flare_lines, frame_area_deg2, pixels_per_degree);
-  }
 };
 
 struct Plan {
@@ -70,6 +65,15 @@ struct Plan {
 
   // One "name = value" line per resolved setting.
   std::string describe() const;
+
+  // The frame's angular area (deg^2): the pupil's adapting field when the
+  // viewer names none.
+  double frame_area_deg2() const { return (width / pixels_per_degree) * (height / pixels_per_degree); }
+
+  // The viewer's optics for this frame (glare/eye_optics.hpp).
+  glare::EyeOptics eye_optics() const {
+    return glare::EyeOptics(glare.viewer, glare.model, glare.flare_lines, frame_area_deg2(), pixels_per_degree);
+  }
 };
 
 // UsageError when the settings contradict each other (plateau-low must be

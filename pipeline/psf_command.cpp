@@ -32,7 +32,7 @@ PsfSummary write_psf(const Settings& s, const PsfRequest& r) {
   frame.frames_per_second = 30.0;
   const Plan plan = compile_plan(s, frame);
   const double ppd = plan.pixels_per_degree;
-  const glare::EyeOptics optics = plan.glare.optics(ppd);
+  const glare::EyeOptics optics = plan.eye_optics();
   PsfSummary summary;
   summary.pupil_mm = optics.pupil_mm(r.adaptation_log);
   std::vector<cv::Mat> channels;
