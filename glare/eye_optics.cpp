@@ -15,8 +15,10 @@ EyeOptics::EyeOptics(const ViewerProfile& viewer, PsfModel model, bool flare, do
 
 double EyeOptics::pupil_mm(double a) const { return glare::pupil_mm(viewer_, a, frame_area_deg2_); }
 
-PsfWeights EyeOptics::weights(double a) const {
-  const PsfWeights vos = psf_weights(viewer_, a, pupil_mm(a));
+PsfWeights EyeOptics::weights(double a) const { return weights(a, pupil_mm(a)); }
+
+PsfWeights EyeOptics::weights(double a, double pupil) const {
+  const PsfWeights vos = psf_weights(viewer_, a, pupil);
   if (model_ == PsfModel::vos) return vos;
   // The CIE equation fixes the scattered share for the viewer; the halo
   // follows adaptation and pupil as in the Vos model; haze adds bloom; the
@@ -24,10 +26,10 @@ PsfWeights EyeOptics::weights(double a) const {
   PsfWeights w;
   w.inner = cie_.scattered_share;
   w.halo = vos.halo;
-  w.outer = viewer_.haze;
-  w.core = std::max(1.0 - w.inner - w.halo - w.outer, 0.0);
-  const double sum = w.core + w.inner + w.outer + w.halo;
-  return {w.core / sum, w.inner / sum, w.outer / sum, w.halo / sum};
+  const double core = 1.0 - w.inner - w.halo;
+  w.outer = std::clamp(viewer_.haze, 0.0, 1.0) * core;  // haze's share of the core
+  w.core = core - w.outer;
+  return w;
 }
 
 std::function<double(double)> EyeOptics::component(int slot) const {

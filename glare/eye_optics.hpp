@@ -36,6 +36,8 @@ class EyeOptics {
   // The component weights at adaptation 10^adaptation_log cd/m^2, for the
   // viewer's pupil there. They sum to 1.
   PsfWeights weights(double adaptation_log) const;
+  // The same for a pupil of pupil_mm (the pupil has its own dynamics).
+  PsfWeights weights(double adaptation_log, double pupil_mm) const;
 
   // The components' radial densities (per steradian, unit volume, t in
   // degrees) for the core, inner and outer slots: Vos f0, f1, f2; for cie,

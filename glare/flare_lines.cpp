@@ -46,6 +46,15 @@ FlareLineSet flare_lines(const ViewerProfile& viewer, FlareKind kind) {
     line.angle_rad += M_PI;
     set.lines.push_back(line);
   }
+  // Haze thins the lines (Matsuda and Ikedo): the weaker lines (strength
+  // below the haze share) drown in the bloom, and the rest lose contrast
+  // against the smooth floor in proportion. The pattern is otherwise the
+  // same: haze 0 leaves it untouched.
+  const double haze = std::clamp(viewer.haze, 0.0, 1.0);
+  set.lines.erase(std::remove_if(set.lines.begin(), set.lines.end(),
+                                 [&](const FlareLine& l) { return l.strength < haze; }),
+                  set.lines.end());
+  set.contrast *= 1.0 - haze;
   std::sort(set.lines.begin(), set.lines.end(),
             [](const FlareLine& a, const FlareLine& b) { return a.angle_rad < b.angle_rad; });
   return set;

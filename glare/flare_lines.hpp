@@ -16,6 +16,8 @@
 // factor 1.5 is this project's choice). A brighter source shows more and
 // longer lines by itself: the pattern multiplies the PSF, so the dim ends
 // and the weak lines cross the display's threshold only for bright lights.
+// Haze thins them: lines weaker than the haze share go, and the rest lose
+// that share of their contrast (Matsuda and Ikedo).
 #pragma once
 
 #include <cstdint>

@@ -24,16 +24,22 @@ PsfWeights psf_weights(const ViewerProfile& viewer, double a, double pupil_mm) {
                  : a <= middle  ? mix(kScotopic, kMesopic, (a - scotopic) / (middle - scotopic))
                  : a < photopic ? mix(kMesopic, kPhotopic, (a - middle) / (photopic - middle))
                                 : kPhotopic;
-  const double aging = 6.9e-9 * std::pow(viewer.age_years, 4.0);  // seed 000 eq. 10
-  w.core -= aging + viewer.haze;  // haze: the viewer's share of the core moved into the bloom
-  w.outer += aging + viewer.haze;
+  // Age (seed 000 eq. 10) moves 6.9e-9 A^4 from f0 to f2. Past about 85
+  // years that would take more than the core has: the move stops at 90 % of
+  // the core, so the weights stay valid and nothing is renormalised away
+  // from the corona at any age.
+  const double aging = std::min(6.9e-9 * std::pow(viewer.age_years, 4.0), 0.9 * w.core);
+  w.core -= aging;
+  w.outer += aging;
+  // Haze: the viewer's haze share of what is left of the core goes to the bloom.
+  const double hazed = std::clamp(viewer.haze, 0.0, 1.0) * w.core;
+  w.core -= hazed;
+  w.outer += hazed;
   const double f = std::clamp((pupil_mm - 2.5) / 1.0, 0.0, 1.0);
   const double halo = w.halo * f * f * (3.0 - 2.0 * f);
   w.core += w.halo - halo;
   w.halo = halo;
-  w.core = std::max(w.core, 0.0);
-  const double sum = w.core + w.inner + w.outer + w.halo;
-  return {w.core / sum, w.inner / sum, w.outer / sum, w.halo / sum};
+  return w;
 }
 
 }  // namespace eyestream::glare

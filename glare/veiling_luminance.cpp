@@ -8,8 +8,10 @@ double veiling_luminance(const cv::Mat& luminance, const ComponentKernels& k, co
                          double exclusion_px) {
   CV_Assert(luminance.type() == CV_32F);
   const cv::Point c = k.centre();
-  const cv::Mat* components[4] = {&k.core, &k.inner, &k.outer, &k.halo[1]};
-  const double weights[4] = {w.core, w.inner, w.outer, w.halo};
+  // The halo's luminance kernel: its R, G and B kernels by the Rec.709
+  // luminance weights, as the picture's luminance combines them.
+  const cv::Mat* components[6] = {&k.core, &k.inner, &k.outer, &k.halo[0], &k.halo[1], &k.halo[2]};
+  const double weights[6] = {w.core, w.inner, w.outer, 0.2126 * w.halo, 0.7152 * w.halo, 0.0722 * w.halo};
   // The point's pixel: kernel offset (point - p) in whole pixels.
   const int px = int(std::floor(x)), py = int(std::floor(y));
   double veil = 0.0;
@@ -20,7 +22,7 @@ double veiling_luminance(const cv::Mat& luminance, const ComponentKernels& k, co
       const int kx = c.x + px - q, ky = c.y + py - r;
       if (kx < 0 || ky < 0 || kx >= k.core.cols || ky >= k.core.rows) continue;
       double kernel = 0.0;
-      for (int i = 0; i < 4; ++i) kernel += weights[i] * components[i]->at<double>(ky, kx);
+      for (int i = 0; i < 6; ++i) kernel += weights[i] * components[i]->at<double>(ky, kx);
       veil += double(l[q]) * kernel;
     }
   }

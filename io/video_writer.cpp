@@ -11,6 +11,7 @@ extern "C" {
 }
 
 #include <cmath>
+#include <cstring>
 #include <optional>
 #include <opencv2/core.hpp>
 
@@ -93,6 +94,12 @@ struct VideoWriter::Impl {
     av_dict_set(&opts, "crf", std::to_string(options.crf).c_str(), 0);
     av_dict_set(&opts, "preset", options.preset.c_str(), 0);
     if (options.codec == "hevc") av_dict_set(&opts, "x265-params", x265_params().c_str(), 0);
+    // x264's AVX-512 kernels (mbtree) read past their buffers, so its output
+    // depended on what lay beside them (the thread count, the timing): on a
+    // CPU with AVX-512, x264 is held to its AVX2 kernels, with which the
+    // bytes depend on the frames alone (tests/end_to_end_test.cpp).
+    if (options.codec != "hevc" && __builtin_cpu_supports("avx512f"))
+      av_dict_set(&opts, "x264-params", "asm=avx2,fma3,bmi2,lzcnt", 0);
     rc = avcodec_open2(codec, encoder, &opts);
     av_dict_free(&opts);
     if (rc < 0) fail(std::string("cannot open the ") + encoder_name + " encoder", rc);
@@ -191,6 +198,11 @@ struct VideoWriter::Impl {
       cv::copyMakeBorder(code, padded, 0, height - code.rows, 0, width - code.cols, cv::BORDER_REPLICATE);
     int rc = av_frame_make_writable(yuv);
     if (rc < 0) fail("cannot write a frame", rc);
+    // A buffer made writable may be fresh, its row padding uninitialised,
+    // and x264's SIMD reads past the row's end: cleared, so the encoded
+    // bytes depend on the frame alone, not on what the heap held before.
+    for (AVBufferRef* buf : yuv->buf)
+      if (buf) std::memset(buf->data, 0, buf->size);
     const uint8_t* src[1] = {padded.ptr<uint8_t>()};
     const int src_stride[1] = {int(padded.step[0])};
     sws_scale(sws, src, src_stride, 0, height, yuv->data, yuv->linesize);

@@ -69,6 +69,7 @@ void write_checkpoint(const std::string& path, const Checkpoint& c) {
   nlohmann::json panels = nlohmann::json::array();
   for (const EyeMemory& m : c.panels)
     panels.push_back({{"adaptation_log", m.adaptation_log ? nlohmann::json(*m.adaptation_log) : nlohmann::json()},
+                      {"pupil_mm", m.pupil_mm ? nlohmann::json(*m.pupil_mm) : nlohmann::json()},
                       {"retina_started", m.retina_started},
                       {"matrices", m.retina.size()}});
   header["panels"] = panels;
@@ -102,6 +103,7 @@ Checkpoint read_checkpoint(const std::string& path) {
     for (const nlohmann::json& p : header.at("panels")) {
       EyeMemory m;
       if (!p.at("adaptation_log").is_null()) m.adaptation_log = p.at("adaptation_log").get<double>();
+      if (!p.at("pupil_mm").is_null()) m.pupil_mm = p.at("pupil_mm").get<double>();
       m.retina_started = p.at("retina_started").get<bool>();
       m.retina.resize(p.at("matrices").get<size_t>());
       c.panels.push_back(m);

@@ -3,10 +3,11 @@
 #include <cmath>
 
 #include "glare/pupil.hpp"
+#include "glare/pupil_dynamics.hpp"
 #include "glare/veiling_luminance.hpp"
 #include "pipeline/pixel_checks.hpp"
 #include "retina/adaptation.hpp"
-#include "retina/log_luminance_field.hpp"
+#include "retina/luminance_field.hpp"
 #include "retina/luminance.hpp"
 #include "retina/tone_curve.hpp"
 #include "retina/tone_map.hpp"
@@ -24,33 +25,50 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
   // Non-finite pixels are counted and seen as black; they reach no stage.
   const std::int64_t nonfinite = count_nonfinite(frame.rgb);
   const cv::Mat scene = nonfinite ? finite_copy(frame.rgb) : frame.rgb;
-  // Optics first: the retina sees the glare (MODEL.md 1). The PSF follows
-  // the adaptation at the start of the interval (the first frame's target
-  // on the first frame).
+  // What the frame says of the world: beyond its edge (the surround), and
+  // the field the pupil responds to.
   auto clock = std::chrono::steady_clock::now();
   StageActivity active;
   StageTimes times;
-  const double optics_log = adaptation_ ? *adaptation_ : first_target(scene, segments.front());
-  const cv::Mat retinal = glare_ ? glare_->apply(scene, optics_log, &active.glare) : scene;
+  const retina::LuminanceField scene_field(scene, plan_.dark_cd_m2);
+  const double surround = plan_.surround_from_edge
+                              ? std::max(scene_field.edge_mean(plan_.pixels_per_degree), plan_.dark_cd_m2)
+                              : plan_.surround_cd_m2;
+  const double field_log = std::log10(std::max(scene_field.frame_mean(), plan_.dark_cd_m2));
+  const auto pupil_target = [&](bool closed) {
+    return glare::pupil_mm(plan_.glare.viewer, closed ? plan_.dark_log : field_log, plan_.frame_area_deg2());
+  };
+  // A sequence (or a chunk) starts adapted to its scene, even mid-blink:
+  // the viewer was looking at it before. Optics first: the retina sees the
+  // glare (MODEL.md 1), through the adaptation and the pupil at the start of
+  // the interval (on the first frame, the scene's target).
+  const GazeSegment& first = segments.front();
+  const double optics_log =
+      adaptation_ ? *adaptation_ : scene_field.patch_log_mean(first.x, first.y, plan_.patch_half_px, surround);
+  if (!pupil_) pupil_ = pupil_target(false);
+  const cv::Mat retinal = glare_ ? glare_->apply(scene, optics_log, surround, *pupil_, &active.glare) : scene;
   times.glare_ms = lap_ms(clock);
 
-  // Global adaptation: one exact step per gaze segment (seed 001 eq. 3).
-  const retina::LogLuminanceField field(retinal, plan_.dark_cd_m2);
+  // Global adaptation: one exact step per gaze segment (Jacobs et al. 2015
+  // eq. 3) toward the log of the mean retinal luminance around the gaze;
+  // the pupil follows the field with its own time constants.
+  const retina::LuminanceField field =
+      retinal.data == scene.data ? scene_field : retina::LuminanceField(retinal, plan_.dark_cd_m2);
   double target = plan_.dark_log;
   std::vector<double> adapted;
   adapted.reserve(segments.size());
   for (const GazeSegment& seg : segments) {
-    const double scene_log = field.patch_mean(seg.x, seg.y, plan_.patch_half_px, plan_.surround_log);
+    const double scene_log = field.patch_log_mean(seg.x, seg.y, plan_.patch_half_px, surround);
     target = seg.eye_closed ? plan_.dark_log : scene_log;
-    // A sequence (or a chunk) starts adapted to its scene, even mid-blink.
     if (!adaptation_) adaptation_ = scene_log;
     adaptation_ = retina::adaptation_step(*adaptation_, target, seg.duration(), plan_.adaptation);
     adapted.push_back(*adaptation_);
+    pupil_ = glare::pupil_step(*pupil_, pupil_target(seg.eye_closed), seg.duration(), plan_.pupil);
   }
   const GazeSegment& last = segments.back();
   times.adaptation_ms = lap_ms(clock);
   // Photoreceptor state on the retinal grid.
-  retina_->advance(retinal, segments, adapted);
+  retina_->advance(retinal, segments, adapted, surround);
   active.retina = retina_->stepped();
   times.retina_ms = lap_ms(clock);
 
@@ -88,39 +106,36 @@ void EyeSimulator::fill_glare_report(const cv::Mat& scene, const GazeSegment& ga
   double peak;
   cv::minMaxLoc(luminance, nullptr, &peak);
   r.peak_cd_m2 = peak;
-  r.pupil_mm = glare::pupil_mm(plan_.glare.viewer, *adaptation_, plan_.frame_area_deg2());
+  r.pupil_mm = *pupil_;
   const std::optional<TargetLuminance> target = measure_target(luminance, target_mask);
   if (target) {
     r.target_cd_m2 = target->target_cd_m2;
     r.background_cd_m2 = target->background_cd_m2;
   }
   if (!glare_ || gaze.eye_closed) return;
-  const std::optional<double> veil = glare_->veil_at(luminance, *adaptation_, gaze.x, gaze.y, plan_.veil_exclusion_deg);
+  const std::optional<double> veil = glare_->veil_at(luminance, *adaptation_, *pupil_, gaze.x, gaze.y, plan_.veil_exclusion_deg);
   if (veil) {
     r.veil_cd_m2 = *veil;
     r.ti_percent = glare::threshold_increment(*veil, std::pow(10.0, *adaptation_));
   }
   if (target) {
     const std::optional<double> target_veil =
-        glare_->veil_at(luminance, *adaptation_, target->x, target->y, plan_.veil_exclusion_deg);
+        glare_->veil_at(luminance, *adaptation_, *pupil_, target->x, target->y, plan_.veil_exclusion_deg);
     if (target_veil) r.target_veil_cd_m2 = *target_veil;
   }
-}
-
-double EyeSimulator::first_target(const cv::Mat& scene, const GazeSegment& first) const {
-  return retina::LogLuminanceField(scene, plan_.dark_cd_m2)
-      .patch_mean(first.x, first.y, plan_.patch_half_px, plan_.surround_log);
 }
 
 EyeMemory EyeSimulator::save() const {
   EyeMemory m;
   m.adaptation_log = adaptation_;
+  m.pupil_mm = pupil_;
   m.retina = retina_->save(m.retina_started);
   return m;
 }
 
 void EyeSimulator::restore(const EyeMemory& m) {
   adaptation_ = m.adaptation_log;
+  pupil_ = m.pupil_mm;
   retina_->restore(m.retina, m.retina_started);
 }
 

@@ -27,7 +27,7 @@ struct FrameReport {
   StageActivity active;    // which stages worked on this frame (glare: false when nothing exceeded the display peak)
   StageTimes times;        // and how long each took
   // Filled when the plan asks for a report:
-  double pupil_mm = 0.0;     // Moon-Spencer pupil at the adaptation level
+  double pupil_mm = 0.0;     // the pupil at the end of the interval (it follows the field luminance)
   double peak_cd_m2 = 0.0;   // brightest scene pixel (photopic luminance)
   double veil_cd_m2 = -1.0;  // veiling luminance at the gaze; -1 without a Vos PSF or with eyes closed
   double ti_percent = -1.0;  // threshold increment at the gaze; -1 when the veil is unknown
@@ -41,6 +41,7 @@ struct FrameReport {
 // the optics and mesopic stages keep no state of their own.
 struct EyeMemory {
   std::optional<double> adaptation_log;
+  std::optional<double> pupil_mm;
   bool retina_started = false;
   std::vector<cv::Mat> retina;
 };
@@ -70,10 +71,10 @@ class EyeSimulator {
  private:
   void fill_glare_report(const cv::Mat& scene, const GazeSegment& gaze, const cv::Mat& target_mask,
                          FrameReport& r) const;
-  double first_target(const cv::Mat& scene, const GazeSegment& first) const;
 
   Plan plan_;
   std::optional<double> adaptation_;
+  std::optional<double> pupil_;  // mm
   std::unique_ptr<RetinaStage> retina_;
   std::unique_ptr<MesopicStage> mesopic_;
   std::unique_ptr<GlareStage> glare_;

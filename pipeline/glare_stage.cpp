@@ -1,14 +1,20 @@
 #include "pipeline/glare_stage.hpp"
 
+#include <cstring>
 #include <opencv2/imgproc.hpp>
 
+#include "glare/uniform_field.hpp"
 #include "glare/veiling_luminance.hpp"
 #include "retina/luminance.hpp"
 
 namespace eyestream::pipeline {
 
 GlareStage::GlareStage(const Plan& plan) : plan_(plan), optics_(plan.eye_optics()) {
-  if (plan.glare.gaussian) return;  // no kernels: a separable blur does the work
+  if (plan.glare.gaussian) {  // no kernels: a separable blur does the work
+    if (plan.glare.full)
+      in_frame_.push_back(spread(cv::Mat(plan.height, plan.width, CV_32FC3, cv::Scalar::all(1.0)), {}));
+    return;
+  }
   // The full kernels also give the report its veil (veiling_luminance.hpp).
   if (plan.glare.tail_factor <= 1 || plan.report)
     kernels_ = glare::build_component_kernels(plan.width, plan.height, plan.pixels_per_degree, optics_);
@@ -17,34 +23,98 @@ GlareStage::GlareStage(const Plan& plan) : plan_(plan), optics_(plan.eye_optics(
                                                      plan.glare.tail_factor, optics_);
   else
     convolver_ = std::make_unique<glare::FftConvolver>(kernels_);
+  if (!plan.glare.full) return;
+  // The in-frame share of each component, by the engine itself, so that a
+  // uniform scene and surround come out uniform to the engine's rounding.
+  const cv::Mat ones(plan.height, plan.width, CV_32FC3, cv::Scalar::all(1.0));
+  for (int c = 0; c < 4; ++c) {
+    glare::PsfWeights w;
+    (c == 0 ? w.core : c == 1 ? w.inner : c == 2 ? w.outer : w.halo) = 1.0;
+    in_frame_.push_back(spread(ones, w));
+  }
 }
 
-std::optional<double> GlareStage::veil_at(const cv::Mat& luminance, double adaptation_log, double x, double y,
-                                          double exclusion_deg) const {
+std::optional<double> GlareStage::veil_at(const cv::Mat& luminance, double adaptation_log, double pupil_mm, double x,
+                                          double y, double exclusion_deg) const {
   if (plan_.glare.gaussian || kernels_.core.empty()) return std::nullopt;
-  return glare::veiling_luminance(luminance, kernels_, optics_.weights(adaptation_log), x, y,
+  return glare::veiling_luminance(luminance, kernels_, optics_.weights(adaptation_log, pupil_mm), x, y,
                                   exclusion_deg * plan_.pixels_per_degree);
 }
 
-cv::Mat GlareStage::spread(const cv::Mat& rgb, double adaptation_log) const {
+cv::Mat GlareStage::spread(const cv::Mat& rgb, const glare::PsfWeights& w) const {
   if (plan_.glare.gaussian) {
-    // seed 003: a Gaussian of sigma 0.34 deg; light leaving the frame is lost.
+    // Yoshida et al. 2008: a Gaussian of sigma 0.34 deg; light leaving the frame is lost.
     const double sigma = plan_.glare.gaussian_sigma_deg * plan_.pixels_per_degree;
     cv::Mat out;
     cv::GaussianBlur(rgb, out, cv::Size(0, 0), sigma, sigma, cv::BORDER_CONSTANT);
     return out;
   }
-  const glare::PsfWeights w = optics_.weights(adaptation_log);
   return split_ ? split_->convolve(rgb, w) : convolver_->convolve(rgb, w);
 }
 
-cv::Mat GlareStage::apply(const cv::Mat& rgb, double adaptation_log, bool* ran) const {
+void GlareStage::add_surround(cv::Mat& retinal, const glare::PsfWeights& w, double surround) const {
+  if (!(surround > 0.0)) return;
+  const float s = float(surround);
+  const float weights[4] = {float(w.core), float(w.inner), float(w.outer), float(w.halo)};
+  const size_t n = in_frame_.size();
+  cv::parallel_for_(cv::Range(0, retinal.rows), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      cv::Vec3f* out = retinal.ptr<cv::Vec3f>(y);
+      const cv::Vec3f* m[4] = {};
+      for (size_t c = 0; c < n; ++c) m[c] = in_frame_[c].ptr<cv::Vec3f>(y);
+      for (int x = 0; x < retinal.cols; ++x) {
+        cv::Vec3f inside = n == 1 ? m[0][x] : cv::Vec3f(0, 0, 0);
+        if (n == 4)
+          for (int c = 0; c < 4; ++c) inside += weights[c] * m[c][x];
+        for (int k = 0; k < 3; ++k) out[x][k] += s * std::max(0.0f, 1.0f - inside[k]);
+      }
+    }
+  });
+}
+
+bool GlareStage::Cache::matches(const cv::Mat& rgb, const glare::PsfWeights& w, double s) const {
+  const auto near = [](double a, double b) { return std::abs(a - b) <= kWeightTolerance; };
+  if (scene.empty() || scene.size() != rgb.size() || !near(w.core, weights.core) || !near(w.inner, weights.inner) ||
+      !near(w.outer, weights.outer) || !near(w.halo, weights.halo) ||
+      std::abs(s - surround) > kWeightTolerance * std::max(s, surround))
+    return false;
+  const size_t row_bytes = size_t(rgb.cols) * rgb.elemSize();
+  for (int y = 0; y < rgb.rows; ++y)
+    if (std::memcmp(rgb.ptr(y), scene.ptr(y), row_bytes) != 0) return false;
+  return true;
+}
+
+void GlareStage::Cache::keep(const cv::Mat& rgb, const glare::PsfWeights& w, double s, const cv::Mat& out) {
+  rgb.copyTo(scene);
+  weights = w;
+  surround = s;
+  retinal = out;
+}
+
+cv::Mat GlareStage::apply(const cv::Mat& rgb, double adaptation_log, double surround, double pupil_mm,
+                          bool* ran) {
+  const glare::PsfWeights w = pupil_mm > 0.0 ? optics_.weights(adaptation_log, pupil_mm) : optics_.weights(adaptation_log);
   if (plan_.glare.full) {
+    // A uniform field (and surround) comes back as it is, within kUniform;
+    // a frame and optics equal to the last ones give the last result.
+    const bool uniform = glare::is_uniform_field(rgb, surround, kUniformTolerance);
+    if (plan_.skip && uniform) {
+      if (ran) *ran = false;
+      return rgb;
+    }
+    if (plan_.skip && cache_.matches(rgb, w, surround)) {
+      if (ran) *ran = false;
+      return cache_.retinal;
+    }
     if (ran) *ran = true;
-    return spread(rgb, adaptation_log);
+    cv::Mat out = spread(rgb, w);
+    add_surround(out, w, surround);
+    if (plan_.skip) cache_.keep(rgb, w, surround, out);
+    return out;
   }
-  // The excess over the display peak, with the pixel's colour (seed 000 sec.
-  // 3.2, seed 003): dL = max(L - L_dmax, 0), spread, added back.
+  // The excess over the display peak, with the pixel's colour (Spencer et
+  // al. 1995 sec. 3.2; Yoshida et al. 2008): dL = max(L - L_dmax, 0),
+  // spread, added back.
   const float peak = float(plan_.glare.display_peak_cd_m2);
   cv::Mat excess(rgb.size(), CV_32FC3), kept(rgb.size(), CV_32FC3);
   std::vector<unsigned char> row_has(size_t(rgb.rows), 0);
@@ -66,7 +136,7 @@ cv::Mat GlareStage::apply(const cv::Mat& rgb, double adaptation_log, bool* ran) 
   if (ran) *ran = any;
   if (!any && plan_.skip) return rgb;
   if (ran) *ran = true;
-  return kept + spread(excess, adaptation_log);
+  return kept + spread(excess, w);
 }
 
 }  // namespace eyestream::pipeline

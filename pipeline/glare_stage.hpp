@@ -19,17 +19,31 @@ class GlareStage {
   explicit GlareStage(const Plan& plan);
 
   // The retinal image of `rgb` (finite, cd/m^2) for a viewer adapted to
-  // 10^adaptation_log. Mode "excess" spreads only the light above the
-  // display peak, colour kept (seeds 000 and 003), and adds it back; "full"
-  // spreads everything. When nothing exceeds the display peak in excess
-  // mode, returns `rgb` itself and sets *ran to false: no glare work
-  // (unless the plan says not to skip).
-  cv::Mat apply(const cv::Mat& rgb, double adaptation_log, bool* ran = nullptr) const;
+  // 10^adaptation_log with the pupil `pupil_mm` (0: the pupil of that
+  // adaptation level). Mode "full" (the default) is the eye: the whole image
+  // goes through the PSF, and the surround (surround_cd_m2, everything
+  // beyond the frame) scatters in, so a uniform field stays uniform up to
+  // the frame's edge. Unless the plan says not to skip, a uniform field
+  // (uniform_field.hpp, within kUniformTolerance) is returned as it is, and
+  // a frame equal to the last one, with the same optics (weights within
+  // kWeightTolerance), returns the last result; *ran is false then. Mode "excess" spreads only the light above the display
+  // peak, colour kept, and adds it back (Spencer et al. 1995; Yoshida et al.
+  // 2008: the glare illusion on a display that shows the rest at its true
+  // luminance); with nothing above the peak there is no glare work.
+  cv::Mat apply(const cv::Mat& rgb, double adaptation_log, double surround_cd_m2, double pupil_mm = 0.0,
+                bool* ran = nullptr);
+
+  // The error bounds of skipping: relative, on a uniform field; absolute,
+  // on each PSF weight (the smallest non-zero weight is about 0.01, so a
+  // reused frame's glare is within 1e-5 of its own value).
+  static constexpr double kUniformTolerance = 1e-3;
+  static constexpr double kWeightTolerance = 1e-7;
 
   // The veiling luminance (cd/m^2) at (x, y) from the light more than
   // exclusion_deg away (glare/veiling_luminance.hpp), for the viewer at
-  // this adaptation; nothing with the Gaussian model (it is no eye PSF).
-  std::optional<double> veil_at(const cv::Mat& luminance, double adaptation_log, double x, double y,
+  // this adaptation and pupil; nothing with the Gaussian model (it is no
+  // eye PSF).
+  std::optional<double> veil_at(const cv::Mat& luminance, double adaptation_log, double pupil_mm, double x, double y,
                                 double exclusion_deg) const;
 
   // The PSF's component kernels (empty with the Gaussian model, and with
@@ -37,14 +51,29 @@ class GlareStage {
   const glare::ComponentKernels& kernels() const { return kernels_; }
 
  private:
-  // Convolves `rgb` with the frame's PSF.
-  cv::Mat spread(const cv::Mat& rgb, double adaptation_log) const;
+  // Convolves `rgb` with the PSF of weights `w`.
+  cv::Mat spread(const cv::Mat& rgb, const glare::PsfWeights& w) const;
+  // Adds the light the surround scatters into the frame: S (1 - M(x)),
+  // M(x) the share of the PSF at x that falls inside the frame.
+  void add_surround(cv::Mat& retinal, const glare::PsfWeights& w, double surround_cd_m2) const;
 
   const Plan plan_;
   const glare::EyeOptics optics_;
   glare::ComponentKernels kernels_;
   std::unique_ptr<glare::FftConvolver> convolver_;     // exact engine
   std::unique_ptr<glare::SplitConvolver> split_;       // or the split one
+  // Full mode: per component (core, inner, outer, halo), the share of the
+  // PSF centred at each pixel that falls inside the frame (CV_32FC3).
+  std::vector<cv::Mat> in_frame_;
+  // The last full-mode frame, for still scenes.
+  struct Cache {
+    cv::Mat scene, retinal;
+    glare::PsfWeights weights;
+    double surround = 0.0;
+    bool matches(const cv::Mat& rgb, const glare::PsfWeights& w, double surround_cd_m2) const;
+    void keep(const cv::Mat& rgb, const glare::PsfWeights& w, double surround_cd_m2, const cv::Mat& retinal);
+  };
+  Cache cache_;
 };
 
 }  // namespace eyestream::pipeline

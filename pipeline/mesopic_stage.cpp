@@ -38,6 +38,12 @@ void MesopicStage::render(const cv::Mat& rgb, const retina::ToneCurve& curve, do
                           cv::Mat& out, StageActivity* activity) const {
   retina::MesopicColour colour;
   const bool tinted = plan_.mesopic.enabled && retina::mesopic_colour(adaptation_log, plan_.mesopic.colour, colour);
+  cv::Mat rho;
+  if (tinted && plan_.mesopic.colour.local_sigma_deg > 0.0) {
+    retina::local_rho(rgb, adaptation_log, plan_.mesopic.colour.local_sigma_deg * plan_.pixels_per_degree,
+                      plan_.dark_cd_m2, plan_.mesopic.colour, rho);
+    colour.rho_map = &rho;
+  }
   if (tinted)
     retina::tone_map(rgb, curve, colour, out);
   else

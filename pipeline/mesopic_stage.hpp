@@ -14,8 +14,11 @@
 namespace eyestream::pipeline {
 
 // Which luminance drives each effect: the colour effects follow the
-// adaptation level A, the state of the whole visual system (rods or cones
-// dominating), which changes smoothly with time, so colours never flicker.
+// brighter of the adaptation level A (the state of the whole visual system,
+// which changes smoothly with time) and the local retinal luminance
+// low-passed at local_sigma_deg (cones see a bright light whatever the
+// global adaptation), so a red tail light stays red at night while dim
+// surfaces drift to the scotopic purple as before.
 // Acuity follows the brighter of A and the local luminance low-passed at
 // the coarsest band's scale: a dark-adapted viewer still resolves a lit
 // sign, and a light-adapted one is never blurred.

@@ -22,6 +22,8 @@ Plan compile_plan(const Settings& s, const io::SourceInfo& source) {
   p.dark_log = std::log10(s.dark_cd_m2);
   p.surround_cd_m2 = std::max(s.surround_cd_m2, s.dark_cd_m2);
   p.surround_log = std::log10(p.surround_cd_m2);
+  p.surround_from_edge = s.surround_mode == "edge";
+  p.pupil = s.pupil_dynamics;
   p.adaptation = s.adaptation;
   p.tone = s.tone;
   p.encoding = s.encoding;
@@ -58,7 +60,7 @@ namespace {
 
 std::string describe_glare(const GlarePlan& g) {
   std::ostringstream o;
-  o << (g.enabled ? (g.full ? "full image" : "excess over the display peak") : "off");
+  o << (g.enabled ? (g.full ? "full image, surround scattered in" : "excess over the display peak") : "off");
   if (g.gaussian) {
     o << ", Gaussian kernel (sigma " << g.gaussian_sigma_deg << " deg)";
   } else {
@@ -100,11 +102,20 @@ std::string Plan::describe() const {
     << (retina.afterimages.local_adaptation ? "local adaptation" : "no local adaptation") << "\n"
     << "mesopic = " << (mesopic.enabled ? "on" : "off") << " (rho from " << mesopic.colour.bottom_log << " to "
     << mesopic.colour.top_log << " log10 cd/m^2; acuity loss " << (mesopic.acuity ? "on" : "off") << ")\n"
-    << "stages = " << (glare.enabled ? "glare (frames with light above the display peak), " : "")
+    << "surround = "
+    << (surround_from_edge ? "the frame's outer 1 deg band, frame by frame"
+                           : std::to_string(surround_cd_m2) + " cd/m^2")
+    << "\n"
+    << "pupil = follows the field luminance, constricting with tau " << pupil.constrict_tau_s
+    << " s, dilating with tau " << pupil.dilate_tau_s << " s\n"
+    << "stages = "
+    << (glare.enabled ? (glare.full ? "glare (frames with a source 40 times brighter than its surroundings), "
+                                    : "glare (frames with light above the display peak), ")
+                      : "")
     << "adaptation, retina, tone curve, mesopic (below 7.5 cd/m^2 of adaptation), afterimages, display encoding"
     << (encoding.dither ? " (dithered)" : "") << "\n"
     << "skipping = "
-    << (skip ? "on (glare without light above the display peak; retina and afterimages at rest; acuity loss "
+    << (skip ? "on (glare without a visible source; retina and afterimages at rest; acuity loss "
                "where no band can be lost)"
              : "off (--no-skip: every stage runs on every frame)")
     << "\n";

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "glare/eye_optics.hpp"
+#include "glare/pupil_dynamics.hpp"
 #include "io/frame_source.hpp"
 #include "pipeline/settings.hpp"
 #include "retina/acuity_loss.hpp"
@@ -48,7 +49,9 @@ struct Plan {
   double frames_per_second = 30.0;
   double fov_deg = 0.0, pixels_per_degree = 0.0;
   double patch_half_px = 0.0;  // half side of the adaptation patch
-  double surround_cd_m2 = 1.0, surround_log = 0.0;
+  double surround_cd_m2 = 1.0, surround_log = 0.0;  // fixed surround
+  bool surround_from_edge = true;                    // or the frame's edge, frame by frame (settings.hpp)
+  glare::PupilDynamics pupil;
   double dark_cd_m2 = 1e-6, dark_log = -6.0;
   retina::AdaptationParams adaptation;
   retina::ToneCurveParams tone;

@@ -57,9 +57,9 @@ RetinaStage::RetinaStage(const Plan& plan)
 }
 
 void RetinaStage::advance(const cv::Mat& rgb, const std::vector<GazeSegment>& segments,
-                          const std::vector<double>& adaptation_log) {
+                          const std::vector<double>& adaptation_log, double surround_cd_m2) {
   const cv::Mat lms = retina::to_cone_stimulus(rgb, plan_.retina.double_precision ? CV_64F : CV_32F);
-  const cv::Scalar surround = cv::Scalar::all(plan_.surround_cd_m2);
+  const cv::Scalar surround = cv::Scalar::all(surround_cd_m2);
   double frame_dt = 0.0;
   stepped_ = false;
   for (const StepGroup& g : group_segments(segments, plan_.retina.substep_tolerance_px)) {

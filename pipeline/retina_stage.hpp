@@ -30,8 +30,10 @@ class RetinaStage {
   // `rgb` (cd/m^2); `adaptation_log[i]` is the global adaptation after
   // segment i. Consecutive segments with the same eye state and a gaze
   // within the plan's sub-step tolerance are stepped together. The first
-  // call starts the retina at rest for its first stimulus.
-  void advance(const cv::Mat& rgb, const std::vector<GazeSegment>& segments, const std::vector<double>& adaptation_log);
+  // call starts the retina at rest for its first stimulus. Sites looking
+  // beyond the frame see surround_cd_m2.
+  void advance(const cv::Mat& rgb, const std::vector<GazeSegment>& segments, const std::vector<double>& adaptation_log,
+               double surround_cd_m2);
 
   // Adds the afterimages at the gaze (x, y) to the tone-mapped frame.
   // Returns false when it drew nothing because the retina is at rest.

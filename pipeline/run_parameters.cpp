@@ -43,7 +43,12 @@ ParamSet run_parameters(Settings& s) {
   set.add(number("display-diagonal", "m", "display diagonal; the frame fills the display", view,
                  &s.geometry.display_diagonal_m, 0.01, 100));
   set.add(number("viewing-distance", "m", "eye to display distance", view, &s.geometry.viewing_distance_m, 0.01, 1000));
-  set.add(number("surround", "cd/m^2", "luminance seen outside the frame", view, &s.surround_cd_m2, 0, 1e9));
+  set.add(choice("surround-mode",
+                 "what lies beyond the frame: the mean of its outer 1 deg band, frame by frame (edge), or --surround "
+                 "(fixed)",
+                 view, &s.surround_mode, {"edge", "fixed"}));
+  set.add(number("surround", "cd/m^2", "luminance beyond the frame with --surround-mode fixed", view, &s.surround_cd_m2,
+                 0, 1e9));
   // Retina.
   set.add(number("adapt-rate-up", "log10 units/s", "adaptation rate toward brighter (a1)", eye,
                  &s.adaptation.rate_up_log_per_s, 0, 1000));
@@ -73,7 +78,10 @@ ParamSet run_parameters(Settings& s) {
                  optics, &s.glare_engine, {"exact", "split"}));
   set.add(number("glare-tail-factor", "", "the split engine's reduction of the PSF's tail", optics,
                  &s.glare_tail_factor, 2, 16));
-  set.add(choice("glare-mode", "spread the light above the display peak (excess) or the whole image (full)", optics,
+  set.add(choice("glare-mode",
+                 "the whole retinal image through the PSF, the eye (full), or only the light above the display "
+                 "peak, for an HDR display that shows the rest (excess)",
+                 optics,
                  &s.glare_mode, {"excess", "full"}));
   set.add(
       number("display-peak", "cd/m^2", "peak luminance of the display, L_dmax", view, &s.display_peak_cd_m2, 1, 1e5));
@@ -89,8 +97,13 @@ ParamSet run_parameters(Settings& s) {
                  &s.viewer.haze, 0, 0.5));
   set.add(number("viewer-seed", "", "the viewer's flare-line pattern", optics, &s.viewer.seed, 0, 9.007199254740992e15));
   set.add(choice("pupil-model",
-                 "pupil from adaptation luminance: moon-spencer (seed 000) or watson-yellott (with age and field size)",
+                 "pupil from the field's luminance: moon-spencer (Moon and Spencer 1944) or watson-yellott (with age "
+                 "and field size)",
                  optics, &s.pupil_model, {"moon-spencer", "watson-yellott"}));
+  set.add(number("pupil-constrict-tau", "s", "time constant of the pupil's constriction", optics,
+                 &s.pupil_dynamics.constrict_tau_s, 0, 60));
+  set.add(number("pupil-dilate-tau", "s", "time constant of the pupil's dilation", optics,
+                 &s.pupil_dynamics.dilate_tau_s, 0, 60));
   set.add(number("pupil-field", "deg", "watson-yellott: diameter of the adapting field; 0: the frame's field", optics,
                  &s.viewer.pupil_field_deg, 0, 180));
   // Retina state and afterimages.
@@ -134,6 +147,10 @@ ParamSet run_parameters(Settings& s) {
                  &s.mesopic_colour.bottom_log, -8, 8));
   set.add(flag("purkinje", "blend photopic and scotopic luminance weights by rho", meso, &s.mesopic_colour.purkinje));
   set.add(flag("hue-shift", "colours drift toward the scotopic tint by rho", meso, &s.mesopic_colour.hue_shift));
+  set.add(number("mesopic-local-scale", "deg",
+                 "mesopic colour follows the local luminance low-passed at this sigma where it is brighter than the "
+                 "adaptation level; 0: the adaptation level alone",
+                 meso, &s.mesopic_colour.local_sigma_deg, 0, 10));
   const char* rgb[3] = {"r", "g", "b"};
   for (int c = 0; c < 3; ++c)
     set.add(number(std::string("scotopic-tint-") + rgb[c], "linear",

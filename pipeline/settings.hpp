@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "glare/pupil_dynamics.hpp"
 #include "glare/viewer.hpp"
 #include "io/exr_sequence_source.hpp"
 #include "io/video_source.hpp"
@@ -42,18 +43,24 @@ struct Settings {
   retina::AdaptationParams adaptation;
   retina::ToneCurveParams tone;
   double adaptation_patch_deg = 1.5;  // side of the square patch around the gaze (MODEL.md 2.1: 1-2 deg)
-  double surround_cd_m2 = 1.0;        // luminance seen by retina sites looking outside the frame
+  // What lies beyond the frame (seen by retina sites looking outside it,
+  // counted in the adaptation patch, scattered in by the glare): "edge", the
+  // world continues at the mean luminance of the frame's outer 1 deg band,
+  // frame by frame; "fixed", --surround cd/m^2 (a display in a room).
+  std::string surround_mode = "edge";
+  double surround_cd_m2 = 1.0;
   double dark_cd_m2 = 1e-6;           // what closed eyes see; floor of all log luminances
 
   // Optics.
   glare::ViewerProfile viewer;
   bool glare = true;
   std::string psf_model = "vos";      // vos: seed 000's PSF; cie: CIE 146 scatter; gaussian: seed 003's kernel
+  glare::PupilDynamics pupil_dynamics;
   std::string pupil_model = "moon-spencer";  // or watson-yellott (glare/pupil.hpp)
   bool flare_lines = true;            // radial streaks of corona and halo (glare/flare_lines.hpp)
   std::string glare_engine = "exact"; // Vos PSF: exact (full-resolution FFT) or split (tail at reduced resolution)
   int glare_tail_factor = 4;          // the split engine's reduction of the tail
-  std::string glare_mode = "excess";  // excess: spread the light above the display peak; full: everything
+  std::string glare_mode = "full";    // full: the eye, everything through the PSF; excess: the light above the display peak
   double display_peak_cd_m2 = 100.0;  // L_dmax (MODEL.md 0)
 
   // Retina state (per-cone bleaching and calcium on a retina-fixed grid).

@@ -1,6 +1,8 @@
 #include "retina/mesopic.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
 
 #include "retina/luminance.hpp"
 
@@ -21,6 +23,34 @@ bool mesopic_colour(double adaptation_log, const MesopicParams& p, MesopicColour
   out.tint_ratio = tint / photopic_luminance(tint);
   out.hue_shift = p.hue_shift;
   return true;
+}
+
+void local_rho(const cv::Mat& rgb, double adaptation_log, double sigma_px, double floor_cd_m2, const MesopicParams& p,
+               cv::Mat& rho) {
+  CV_Assert(rgb.type() == CV_32FC3);
+  cv::Mat l(rgb.size(), CV_32F);
+  const float floor = float(floor_cd_m2);
+  cv::parallel_for_(cv::Range(0, rgb.rows), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      const cv::Vec3f* in = rgb.ptr<cv::Vec3f>(y);
+      float* o = l.ptr<float>(y);
+      for (int x = 0; x < rgb.cols; ++x) {
+        const float v = photopic_luminance(in[x]);
+        o[x] = v > floor && std::isfinite(v) ? v : floor;
+      }
+    }
+  });
+  if (sigma_px > 0.0) cv::GaussianBlur(l, l, cv::Size(0, 0), sigma_px, sigma_px, cv::BORDER_REPLICATE);
+  rho.create(rgb.size(), CV_32F);
+  const float a = float(adaptation_log), bottom = float(p.bottom_log), span = float(p.top_log - p.bottom_log);
+  const float margin = float(p.local_margin_log);
+  cv::parallel_for_(cv::Range(0, rgb.rows), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      const float* in = l.ptr<float>(y);
+      float* o = rho.ptr<float>(y);
+      for (int x = 0; x < rgb.cols; ++x) o[x] = std::clamp((std::max(a, std::log10(in[x]) - margin) - bottom) / span, 0.0f, 1.0f);
+    }
+  });
 }
 
 }  // namespace eyestream::retina

@@ -19,14 +19,17 @@ void tone_map(const cv::Mat& rgb, const ToneCurve& curve, cv::Mat& out) {
 void tone_map(const cv::Mat& rgb, const ToneCurve& curve, const MesopicColour& m, cv::Mat& out) {
   CV_Assert(rgb.type() == CV_32FC3);
   out.create(rgb.size(), CV_32FC3);
-  const float rho = m.rho;
-  const cv::Vec3f tint = m.hue_shift ? m.tint_ratio * (1.0f - rho) : cv::Vec3f(0, 0, 0);
-  const float scene_share = m.hue_shift ? rho : 1.0f;
+  CV_Assert(!m.rho_map || (m.rho_map->size() == rgb.size() && m.rho_map->type() == CV_32F));
+  const cv::Vec3f tint_ratio = m.hue_shift ? m.tint_ratio : cv::Vec3f(0, 0, 0);
   cv::parallel_for_(cv::Range(0, rgb.rows), [&](const cv::Range& rows) {
     for (int y = rows.start; y < rows.end; ++y) {
       const cv::Vec3f* in = rgb.ptr<cv::Vec3f>(y);
+      const float* rho_row = m.rho_map ? m.rho_map->ptr<float>(y) : nullptr;
       cv::Vec3f* o = out.ptr<cv::Vec3f>(y);
       for (int x = 0; x < rgb.cols; ++x) {
+        const float rho = rho_row ? rho_row[x] : m.rho;
+        const cv::Vec3f tint = tint_ratio * (1.0f - rho);
+        const float scene_share = m.hue_shift ? rho : 1.0f;
         const cv::Vec3f p = in[x];
         const float yp = photopic_luminance(p);
         const float ys = m.scotopic_weights.dot(p);

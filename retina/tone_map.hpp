@@ -21,6 +21,7 @@ void tone_map(const cv::Mat& rgb, const ToneCurve& curve, cv::Mat& display_linea
 // colour is rebuilt from rho rgb / Yp + (1 - rho) tint_ratio (hue shift and
 // desaturation toward the scotopic grey). The output's photopic luminance
 // is R(Ym), so at equal photopic luminance blue gains on red as rho falls.
+// With mesopic.rho_map set, rho is taken per pixel (local mesopic colour).
 void tone_map(const cv::Mat& rgb, const ToneCurve& curve, const MesopicColour& mesopic, cv::Mat& display_linear);
 
 }  // namespace eyestream::retina

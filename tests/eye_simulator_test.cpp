@@ -45,14 +45,14 @@ double mean_output(EyeSimulator& eye, float luminance, int index, bool closed = 
 TEST(EyeSimulator, StepFromDarkToBrightDarkensOverTheFollowingSecond) {
   EyeSimulator eye(test_plan());
   for (int i = 0; i < 30; ++i) mean_output(eye, 0.1f, i);
-  EXPECT_NEAR(eye.adaptation_log(), -1.0, 1e-9);
+  EXPECT_NEAR(eye.adaptation_log(), -1.0, 1e-7);  // 0.1f is 0.1 to 1.5e-8
   std::vector<double> after;
   for (int i = 30; i < 60; ++i) after.push_back(mean_output(eye, 100.0f, i));
   for (size_t k = 1; k < after.size(); ++k) EXPECT_LT(after[k], after[k - 1]) << k;
   // The model's size of the effect: J falls from 0.889 to 0.797 (display
   // codes 242 to 230 after gamma 0.455) as A rises from -1 to -0.25.
   EXPECT_GT(after.front() - after.back(), 0.08);
-  EXPECT_NEAR(eye.adaptation_log(), -1.0 + 0.75 * 1.0, 1e-9);
+  EXPECT_NEAR(eye.adaptation_log(), -1.0 + 0.75 * 1.0, 1e-7);
 }
 
 TEST(EyeSimulator, StepFromBrightToDarkBrightensSlowly) {

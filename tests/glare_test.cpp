@@ -171,16 +171,18 @@ TEST(Glare, OlderViewersSeeMoreVeil) {
 namespace eyestream::pipeline {
 namespace {
 
-TEST(GlareStage, FramesWithNothingAboveTheDisplayPeakSkipTheWork) {
-  const GlareStage stage(test::plan_for(Settings{}, 64, 36));
+TEST(GlareStage, ExcessModeFramesWithNothingAboveTheDisplayPeakSkipTheWork) {
+  Settings s;
+  s.glare_mode = "excess";
+  GlareStage stage(test::plan_for(s, 64, 36));
   const cv::Mat dim = test::constant_frame(64, 36, {50, 50, 50});
   bool ran = true;
-  const cv::Mat out = stage.apply(dim, 1.0, &ran);
+  const cv::Mat out = stage.apply(dim, 1.0, 0.0, 0.0, &ran);
   EXPECT_FALSE(ran);
   EXPECT_EQ(out.data, dim.data) << "the frame itself, untouched";
   cv::Mat bright = dim.clone();
   bright.at<cv::Vec3f>(10, 10) = cv::Vec3f(1e5f, 1e5f, 1e5f);
-  const cv::Mat glared = stage.apply(bright, 1.0, &ran);
+  const cv::Mat glared = stage.apply(bright, 1.0, 0.0, 0.0, &ran);
   EXPECT_TRUE(ran);
   EXPECT_GT(glared.at<cv::Vec3f>(20, 40)[1], 50.0f) << "a veil on the dim part";
   EXPECT_NEAR(cv::sum(glared)[1], cv::sum(bright)[1], 0.05 * cv::sum(bright)[1]) << "light moved, not made";
@@ -190,15 +192,16 @@ TEST(GlareStage, FramesWithNothingAboveTheDisplayPeakSkipTheWork) {
 TEST(GlareStage, GaussianModelMovesLightWithoutAddingAny) {
   Settings s;
   s.psf_model = "gaussian";
-  const GlareStage stage(test::plan_for(s, 96, 54));
+  GlareStage stage(test::plan_for(s, 96, 54));
   EXPECT_TRUE(stage.kernels().core.empty()) << "no Vos kernels built";
   cv::Mat scene = test::constant_frame(96, 54, {1, 1, 1});
   scene.at<cv::Vec3f>(27, 48) = cv::Vec3f(1e5f, 1e5f, 1e5f);
   bool ran = false;
-  const cv::Mat out = stage.apply(scene, 0.0, &ran);
+  const cv::Mat out = stage.apply(scene, 0.0, 1.0, 0.0, &ran);
   EXPECT_TRUE(ran);
   // sigma = 0.34 deg is 1.1 px here: light reaches the neighbours, and the
-  // total stays (the source is far from the edges).
+  // total stays (the source is far from the edges; the 1 cd/m^2 surround
+  // scatters in what the background scatters out).
   EXPECT_GT(out.at<cv::Vec3f>(27, 49)[1], 1000.0f);
   EXPECT_NEAR(cv::sum(out)[1], cv::sum(scene)[1], 1e-4 * cv::sum(scene)[1]);
 }

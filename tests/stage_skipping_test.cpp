@@ -67,11 +67,11 @@ double max_linear_difference(const Watch& a, const Watch& b) {
 }
 
 TEST(StageSkipping, DimStillFrameSkipsGlareRetinaAndAfterimagesWithinTolerance) {
-  // 30 cd/m^2 at most: nothing above the 100 cd/m^2 display peak.
   const std::vector<cv::Mat> frames(60, still_scene(30.0f));
   const std::vector<Gaze> gaze(60, Gaze(40, 27));
   const Watch on = watch(frames, gaze, true), off = watch(frames, gaze, false);
-  for (const FrameReport& r : on.reports) EXPECT_FALSE(r.active.glare);
+  // Full-image glare runs on the first frame; the still frame then reuses it.
+  for (size_t i = 1; i < on.reports.size(); ++i) EXPECT_FALSE(on.reports[i].active.glare) << "frame " << i;
   for (const FrameReport& r : off.reports) {
     EXPECT_TRUE(r.active.glare);
     EXPECT_TRUE(r.active.retina);
@@ -79,7 +79,8 @@ TEST(StageSkipping, DimStillFrameSkipsGlareRetinaAndAfterimagesWithinTolerance) 
   }
   // The viewer starts at rest on the first frame; after it nothing changes.
   int idle = 0;
-  for (size_t i = 1; i < on.reports.size(); ++i) idle += !on.reports[i].active.retina && !on.reports[i].active.afterimages;
+  for (size_t i = 1; i < on.reports.size(); ++i)
+    idle += !on.reports[i].active.retina && !on.reports[i].active.afterimages && !on.reports[i].active.glare;
   EXPECT_GE(idle, 55) << "frames skipped at rest";
   EXPECT_LE(max_linear_difference(on, off), 1e-4);
   EXPECT_LE(max_code_difference(on, off), 1.0);

@@ -1,0 +1,63 @@
+#include "retina/luminance_field.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+#include "retina/luminance.hpp"
+
+namespace eyestream::retina {
+
+LuminanceField::LuminanceField(const cv::Mat& rgb, double floor_cd_m2) {
+  CV_Assert(rgb.type() == CV_32FC3);
+  cv::Mat l(rgb.size(), CV_32F);
+  const float floor = float(floor_cd_m2);
+  cv::parallel_for_(cv::Range(0, rgb.rows), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      const cv::Vec3f* in = rgb.ptr<cv::Vec3f>(y);
+      float* out = l.ptr<float>(y);
+      for (int x = 0; x < rgb.cols; ++x) {
+        const float v = photopic_luminance(in[x]);
+        out[x] = (v > floor && std::isfinite(v)) ? v : floor;
+      }
+    }
+  });
+  cv::integral(l, integral_, CV_64F);
+}
+
+double LuminanceField::patch_log_mean(double x, double y, double half, double surround_cd_m2) const {
+  const int cols = integral_.cols - 1, rows = integral_.rows - 1;
+  half = std::max(half, 0.5);
+  // The patch in whole pixels (at least one), then its part inside the frame.
+  const long px0 = std::lround(x - half), py0 = std::lround(y - half);
+  const long px1 = std::max(std::lround(x + half), px0 + 1), py1 = std::max(std::lround(y + half), py0 + 1);
+  const int x0 = int(std::clamp<long>(px0, 0, cols)), x1 = int(std::clamp<long>(px1, 0, cols));
+  const int y0 = int(std::clamp<long>(py0, 0, rows)), y1 = int(std::clamp<long>(py1, 0, rows));
+  const double total = double(px1 - px0) * double(py1 - py0);
+  const double inside = double(x1 - x0) * double(y1 - y0);
+  const double sum = integral_.at<double>(y1, x1) - integral_.at<double>(y0, x1) - integral_.at<double>(y1, x0) +
+                     integral_.at<double>(y0, x0);
+  return std::log10((sum + (total - inside) * surround_cd_m2) / total);
+}
+
+double LuminanceField::frame_mean() const {
+  const int cols = integral_.cols - 1, rows = integral_.rows - 1;
+  return integral_.at<double>(rows, cols) / (double(cols) * double(rows));
+}
+
+}  // namespace eyestream::retina
+
+namespace eyestream::retina {
+
+double LuminanceField::edge_mean(double band_px) const {
+  const int cols = integral_.cols - 1, rows = integral_.rows - 1;
+  const int b = std::max(1, int(std::lround(band_px)));
+  if (2 * b >= cols || 2 * b >= rows) return frame_mean();
+  const double all = integral_.at<double>(rows, cols);
+  const double inner = integral_.at<double>(rows - b, cols - b) - integral_.at<double>(b, cols - b) -
+                       integral_.at<double>(rows - b, b) + integral_.at<double>(b, b);
+  const double count = double(cols) * rows - double(cols - 2 * b) * (rows - 2 * b);
+  return (all - inner) / count;
+}
+
+}  // namespace eyestream::retina

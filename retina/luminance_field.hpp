@@ -1,0 +1,34 @@
+// Mean luminance over square patches of a frame in O(1) per query: the
+// adaptation target around the gaze, the log of the average luminance of a
+// small patch (Jacobs et al. 2015, sec. 2.1), and the
+// field luminance the pupil responds to.
+#pragma once
+
+#include <opencv2/core.hpp>
+
+namespace eyestream::retina {
+
+class LuminanceField {
+ public:
+  // `rgb` is linear Rec.709 in cd/m^2. Luminance below floor_cd_m2 (and
+  // non-finite or negative luminance) counts as floor_cd_m2.
+  LuminanceField(const cv::Mat& rgb, double floor_cd_m2);
+
+  // log10 of the mean luminance over the square of side 2*half_size_px
+  // centred at (x, y) in frame pixels (origin at the top-left corner of the
+  // top-left pixel). The part of the square outside the frame counts as
+  // surround_cd_m2. A patch half 1000 and half 1 cd/m^2 gives log10(500.5):
+  // bright parts dominate, as they do for the eye.
+  double patch_log_mean(double x, double y, double half_size_px, double surround_cd_m2) const;
+
+  // Mean luminance of the whole frame (cd/m^2).
+  double frame_mean() const;
+  // Mean luminance of the band of width band_px along the frame's edge (the
+  // whole frame when the band covers it).
+  double edge_mean(double band_px) const;
+
+ private:
+  cv::Mat integral_;  // CV_64F, (rows+1) x (cols+1)
+};
+
+}  // namespace eyestream::retina

@@ -1,0 +1,46 @@
+#include "retina/luminance_field.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "tests/test_support.hpp"
+
+namespace eyestream::retina {
+namespace {
+
+TEST(LuminanceField, UniformFrameGivesItsLogLuminanceInside) {
+  const LuminanceField field(test::constant_frame(40, 30, {100, 100, 100}), 1e-6);
+  EXPECT_NEAR(field.patch_log_mean(20, 15, 5, 1e-6), 2.0, 1e-9);
+  EXPECT_NEAR(field.patch_log_mean(20.3, 14.6, 4.7, 1e-6), 2.0, 1e-9);
+  EXPECT_NEAR(field.frame_mean(), 100.0, 1e-9);
+}
+
+TEST(LuminanceField, OutsideTheFrameCountsAsSurround) {
+  const LuminanceField field(test::constant_frame(40, 30, {100, 100, 100}), 1e-6);
+  // Centred on the left edge: half the patch sees the surround (1 cd/m^2).
+  EXPECT_NEAR(field.patch_log_mean(0, 15, 5, 1.0), std::log10(50.5), 1e-9);
+  // Far outside: all surround.
+  EXPECT_NEAR(field.patch_log_mean(-100, -100, 5, 0.1), -1.0, 1e-9);
+}
+
+// Jacobs et al. 2015, sec. 2.1: the target is the log of the average
+// luminance, not the average of log luminance. A patch half 1000 and half
+// 1 cd/m^2 adapts to 500.5 cd/m^2 (the log mean would give 31.6).
+TEST(LuminanceField, PatchAveragesLuminancesNotLogs) {
+  cv::Mat frame = test::constant_frame(2, 2, {1, 1, 1});
+  frame.col(1).setTo(cv::Scalar(1000, 1000, 1000));
+  const LuminanceField field(frame, 1e-6);
+  EXPECT_NEAR(field.patch_log_mean(1, 1, 1.0, 1.0), std::log10(500.5), 1e-6);
+}
+
+TEST(LuminanceField, BlackAndNonFinitePixelsCountAsTheFloor) {
+  cv::Mat frame = test::constant_frame(2, 2, {0, 0, 0});
+  frame.at<cv::Vec3f>(0, 1) = cv::Vec3f(INFINITY, 0, 0);
+  frame.at<cv::Vec3f>(1, 1) = cv::Vec3f(NAN, 1, 1);
+  const LuminanceField field(frame, 1e-4);
+  EXPECT_NEAR(field.patch_log_mean(1, 1, 1.0, 1.0), -4.0, 1e-6);
+}
+
+}  // namespace
+}  // namespace eyestream::retina
