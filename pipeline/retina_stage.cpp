@@ -84,15 +84,18 @@ void RetinaStage::advance(const cv::Mat& rgb, const std::vector<GazeSegment>& se
   if (!stepped_) return;
   // Soft afterimages: the departure from equilibrium spreads as sigma^2 =
   // rate * dt, so the look does not depend on the frame rate.
-  const double sigma_deg = std::sqrt(plan_.retina.spread_deg2_per_s * frame_dt);
-  state_.soften(sigma_deg * plan_.pixels_per_degree * grid_.sites_per_pixel());
+  state_.soften(spread_variance_sites2(frame_dt));
+}
+
+double RetinaStage::spread_variance_sites2(double dt_s) const {
+  const double sites_per_deg = plan_.pixels_per_degree * grid_.sites_per_pixel();
+  return plan_.retina.spread_deg2_per_s * dt_s * sites_per_deg * sites_per_deg;
 }
 
 void RetinaStage::catch_up() {
   if (!(pending_dt_ > 0)) return;
   state_.step(last_stimulus_, retina::ToneCurve(last_curve_log_, plan_.tone), pending_dt_);
-  const double sigma_deg = std::sqrt(plan_.retina.spread_deg2_per_s * pending_dt_);
-  state_.soften(sigma_deg * plan_.pixels_per_degree * grid_.sites_per_pixel());
+  state_.soften(spread_variance_sites2(pending_dt_));
   pending_dt_ = 0.0;
 }
 

@@ -67,6 +67,8 @@ class RetinaStage {
   // stimulus changes (the step is exact for a constant stimulus, seed 001
   // eqs. 5 and 9, so one long step equals many short ones).
   void catch_up();
+  // The afterimage spread over dt_s seconds, in grid sites^2.
+  double spread_variance_sites2(double dt_s) const;
   bool unchanged(const cv::Mat& stimulus, double curve_log) const;
   cv::Mat last_stimulus_;
   double last_curve_log_ = 0.0;

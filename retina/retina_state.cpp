@@ -1,5 +1,7 @@
 #include "retina/retina_state.hpp"
 
+#include "retina/diffusion.hpp"
+
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
@@ -121,11 +123,11 @@ void RetinaState::step(const cv::Mat& lms, const ToneCurve& curve, double dt_s) 
     step_sites<float>(lms, response_, params_, c_max_, dt_s, bleached_, deficit_);
 }
 
-void RetinaState::soften(double sigma_sites) {
-  if (!(sigma_sites > 0.05) || response_.empty()) return;
+void RetinaState::soften(double variance_sites2) {
+  if (!(variance_sites2 > 0.0) || response_.empty()) return;
   auto soften_one = [&](cv::Mat& state, const cv::Mat& rest, double hi) {
     cv::Mat departure = state - rest;
-    cv::GaussianBlur(departure, departure, cv::Size(0, 0), sigma_sites, sigma_sites, cv::BORDER_REPLICATE);
+    diffuse(departure, variance_sites2);
     state = rest + departure;
     cv::max(state, 0.0, state);
     cv::min(state, hi, state);

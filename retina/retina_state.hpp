@@ -40,10 +40,13 @@ class RetinaState {
   // equilibrium and responses for soften() and afterimages().
   void step(const cv::Mat& lms, const ToneCurve& curve, double dt_s);
 
-  // Blurs the departure from equilibrium for the last stimulus (B - B_inf
-  // and D - D_inf) with a Gaussian of sigma_sites: afterimages look soft
-  // (seed 001 sec. 2.4) while a retina at rest stays exactly at rest.
-  void soften(double sigma_sites);
+  // Spreads the departure from equilibrium for the last stimulus (B - B_inf
+  // and D - D_inf) by a blur that adds exactly `variance_sites2` (sites^2)
+  // to its spatial variance along each axis: afterimages look soft (Jacobs
+  // et al. 2015 sec. 2.4) while a retina at rest stays exactly at rest.
+  // Variances add, so many small steps blur as much as one large one
+  // whatever the frame rate or grid (diffusion.hpp).
+  void soften(double variance_sites2);
 
   // The afterimage terms for the last stimulus, weighted by `visibility`
   // (CV_32F, grid-sized, in [0, 1]: the fall-off away from the fovea).
