@@ -12,10 +12,12 @@ namespace eyestream::pipeline {
 MesopicStage::MesopicStage(const Plan& plan) : plan_(plan) {
   if (plan.mesopic.acuity)
     acuity_ =
-        std::make_unique<retina::AcuityLoss>(plan.mesopic.acuity_params, plan.pixels_per_degree, plan.encoding.seed);
+        std::make_unique<retina::AcuityLoss>(plan.mesopic.acuity_params, plan.pixels_per_degree, plan.encoding.seed,
+                                             plan.mesopic.colour.bottom_log, plan.mesopic.colour.top_log);
 }
 
-cv::Mat MesopicStage::acuity_level(const cv::Mat& rgb, double adaptation_log, double time_s) const {
+cv::Mat MesopicStage::acuity_level(const cv::Mat& rgb, double adaptation_log, double time_s, double gaze_x,
+                                   double gaze_y) const {
   // log10 of the local luminance, low-passed at the coarsest band.
   cv::Mat luminance(rgb.size(), CV_32F);
   rgb.forEach<cv::Vec3f>([&](const cv::Vec3f& p, const int* pos) {
@@ -31,11 +33,11 @@ cv::Mat MesopicStage::acuity_level(const cv::Mat& rgb, double adaptation_log, do
   luminance.forEach<float>([&](const float& l, const int* pos) {
     rho.at<float>(pos[0], pos[1]) = std::max(float(retina::mesopic_rho(std::log10(l), m)), floor_rho);
   });
-  return acuity_->level(rho, time_s);
+  return acuity_->level(rho, time_s, gaze_x, gaze_y);
 }
 
 void MesopicStage::render(const cv::Mat& rgb, const retina::ToneCurve& curve, double adaptation_log, double time_s,
-                          cv::Mat& out, StageActivity* activity) const {
+                          cv::Mat& out, StageActivity* activity, double gaze_x, double gaze_y) const {
   retina::MesopicColour colour;
   const bool tinted = plan_.mesopic.enabled && retina::mesopic_colour(adaptation_log, plan_.mesopic.colour, colour);
   cv::Mat rho;
@@ -52,7 +54,7 @@ void MesopicStage::render(const cv::Mat& rgb, const retina::ToneCurve& curve, do
   // (its result would equal its input), unless the plan forbids skipping.
   const bool blur = plan_.mesopic.enabled && acuity_ &&
                     (!plan_.skip || retina::mesopic_rho(adaptation_log, plan_.mesopic.colour) < acuity_->rho_all_kept());
-  if (blur) acuity_->apply(out, acuity_level(rgb, adaptation_log, time_s));
+  if (blur) acuity_->apply(out, acuity_level(rgb, adaptation_log, time_s, gaze_x, gaze_y));
   if (activity) {
     activity->mesopic = tinted;
     activity->acuity = blur;

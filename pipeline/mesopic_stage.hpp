@@ -31,11 +31,14 @@ class MesopicStage {
   // the plain tone curve's; above the acuity stage's limit no band is lost:
   // photopic frames come out bit-identical to a run without this stage.
   // `activity` (may be null) receives which of the two effects ran.
+  // The acuity noise lives on the retina: its pattern moves with the gaze
+  // at (gaze_x, gaze_y).
   void render(const cv::Mat& rgb, const retina::ToneCurve& curve, double adaptation_log, double time_s, cv::Mat& out,
-              StageActivity* activity = nullptr) const;
+              StageActivity* activity = nullptr, double gaze_x = 0.0, double gaze_y = 0.0) const;
 
   // rho + g X of the acuity loss for a frame (for reports and tests).
-  cv::Mat acuity_level(const cv::Mat& rgb, double adaptation_log, double time_s) const;
+  cv::Mat acuity_level(const cv::Mat& rgb, double adaptation_log, double time_s, double gaze_x = 0.0,
+                       double gaze_y = 0.0) const;
 
  private:
   const Plan plan_;

@@ -112,7 +112,7 @@ std::string Plan::describe() const {
     << (glare.enabled ? (glare.full ? "glare (frames with a source 40 times brighter than its surroundings), "
                                     : "glare (frames with light above the display peak), ")
                       : "")
-    << "adaptation, retina, tone curve, mesopic (below 7.5 cd/m^2 of adaptation), afterimages, display encoding"
+    << "adaptation, retina, tone curve, mesopic (colour below 1 cd/m^2 of adaptation, acuity below 56), afterimages, display encoding"
     << (encoding.dither ? " (dithered)" : "") << "\n"
     << "skipping = "
     << (skip ? "on (glare without a visible source; retina and afterimages at rest; acuity loss "

@@ -1,23 +1,37 @@
 #include "retina/acuity_loss.hpp"
 
+#include "retina/acuity_curve.hpp"
+
+#include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
 namespace eyestream::retina {
 
-AcuityLoss::AcuityLoss(const AcuityParams& p, double pixels_per_degree, std::uint64_t seed) : params_(p), seed_(seed) {
-  for (int i = 0; i < p.bands; ++i) sigmas_px_.push_back(p.sigma0_arcmin * std::pow(2.0, i) / 60.0 * pixels_per_degree);
+AcuityLoss::AcuityLoss(const AcuityParams& p, double pixels_per_degree, std::uint64_t seed, double bottom_log,
+                       double top_log)
+    : params_(p), seed_(seed) {
+  // Bands needing more than the eye's limit at 10^0.75 = 5.6 cd/m^2 (42
+  // c/deg; the limit rises only to 44 c/deg at 10 cd/m^2, under one octave
+  // step) share the threshold of that level.
+  const double finest_cpd = acuity_limit_cpd(0.75);
+  for (int i = 0; i < p.bands; ++i) {
+    const double sigma_deg = p.sigma0_arcmin * std::pow(2.0, i) / 60.0;
+    sigmas_px_.push_back(sigma_deg * pixels_per_degree);
+    const double needed = std::min(p.band_margin * gaussian_cutoff_cpd(sigma_deg), finest_cpd);
+    tau_.push_back((acuity_log_luminance(needed) - bottom_log) / (top_log - bottom_log));
+  }
   noise_.cell_px = std::max(1.0, p.noise_cell_deg * pixels_per_degree);
   noise_.period_s = p.noise_period_s;
   noise_.clip = p.noise_clip;
 }
 
 double AcuityLoss::rho_all_kept() const {
-  return (params_.bands - 0.5) / params_.bands + params_.noise_gain * params_.noise_clip;
+  return *std::max_element(tau_.begin(), tau_.end()) + params_.noise_gain * params_.noise_clip;
 }
 
-cv::Mat AcuityLoss::level(const cv::Mat& rho, double t_s) const {
-  cv::Mat x = smooth_noise(rho.size(), t_s, noise_, seed_, RandomStream::kAcuity);
+cv::Mat AcuityLoss::level(const cv::Mat& rho, double t_s, double gaze_x, double gaze_y) const {
+  cv::Mat x = smooth_noise(rho.size(), t_s, noise_, seed_, RandomStream::kAcuity, {gaze_x, gaze_y});
   return rho + params_.noise_gain * x;  // seed 001 eq. 15: rho + g X
 }
 
@@ -56,6 +70,7 @@ void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
       acuity_blur(blurred[size_t(i)], blurred[size_t(i) + 1], extra, params_.pyramid_from_px);
   }
   const int bands = params_.bands;
+  std::vector<float> tau(tau_.begin(), tau_.end());
   cv::parallel_for_(cv::Range(0, image.rows), [&](const cv::Range& rows) {
     for (int y = rows.start; y < rows.end; ++y) {
       const float* lv = level.ptr<float>(y);
@@ -63,8 +78,7 @@ void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
       for (int x = 0; x < image.cols; ++x) {
         cv::Vec3f sum = blurred[size_t(bands)].ptr<cv::Vec3f>(y)[x];
         for (int i = 0; i < bands; ++i) {
-          const float tau = float((bands - i - 0.5) / bands);
-          if (lv[x] > tau) sum += blurred[size_t(i)].ptr<cv::Vec3f>(y)[x] - blurred[size_t(i) + 1].ptr<cv::Vec3f>(y)[x];
+          if (lv[x] > tau[i]) sum += blurred[size_t(i)].ptr<cv::Vec3f>(y)[x] - blurred[size_t(i) + 1].ptr<cv::Vec3f>(y)[x];
         }
         out[x] = sum;
       }

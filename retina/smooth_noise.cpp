@@ -21,8 +21,12 @@ double smoothstep(double f) { return f * f * (3.0 - 2.0 * f); }
 
 }  // namespace
 
-cv::Mat smooth_noise(cv::Size size, double t_s, const SmoothNoiseParams& p, std::uint64_t seed, RandomStream stream) {
+cv::Mat smooth_noise(cv::Size size, double t_s, const SmoothNoiseParams& p, std::uint64_t seed, RandomStream stream,
+                     cv::Point2d origin) {
   const int gw = int(std::ceil(size.width / p.cell_px)) + 2, gh = int(std::ceil(size.height / p.cell_px)) + 2;
+  // The nodes covering the frame, from the one left of and above its first pixel.
+  const std::int64_t i0 = std::int64_t(std::floor((0.5 - origin.x) / p.cell_px)),
+                     j0 = std::int64_t(std::floor((0.5 - origin.y) / p.cell_px));
   const double tn = t_s / p.period_s;
   const std::int64_t n0 = std::int64_t(std::floor(tn));
   const double wt1 = smoothstep(tn - double(n0)), wt0 = 1.0 - wt1;
@@ -30,19 +34,19 @@ cv::Mat smooth_noise(cv::Size size, double t_s, const SmoothNoiseParams& p, std:
   std::vector<float> layer0(size_t(gw) * gh), layer1(size_t(gw) * gh);
   for (int j = 0; j < gh; ++j)
     for (int i = 0; i < gw; ++i) {
-      layer0[size_t(j) * gw + i] = node_value(seed, stream, i, j, n0);
-      layer1[size_t(j) * gw + i] = node_value(seed, stream, i, j, n0 + 1);
+      layer0[size_t(j) * gw + i] = node_value(seed, stream, i0 + i, j0 + j, n0);
+      layer1[size_t(j) * gw + i] = node_value(seed, stream, i0 + i, j0 + j, n0 + 1);
     }
   cv::Mat out(size, CV_32F);
   cv::parallel_for_(cv::Range(0, size.height), [&](const cv::Range& rows) {
     for (int y = rows.start; y < rows.end; ++y) {
-      const double gy = (y + 0.5) / p.cell_px;
-      const int j = int(gy);
+      const double gy = (y + 0.5 - origin.y) / p.cell_px - double(j0);
+      const int j = int(std::floor(gy));
       const double wy1 = smoothstep(gy - j), wy0 = 1.0 - wy1;
       float* o = out.ptr<float>(y);
       for (int x = 0; x < size.width; ++x) {
-        const double gx = (x + 0.5) / p.cell_px;
-        const int i = int(gx);
+        const double gx = (x + 0.5 - origin.x) / p.cell_px - double(i0);
+        const int i = int(std::floor(gx));
         const double wx1 = smoothstep(gx - i), wx0 = 1.0 - wx1;
         const double w[8] = {wx0 * wy0 * wt0, wx1 * wy0 * wt0, wx0 * wy1 * wt0, wx1 * wy1 * wt0,
                              wx0 * wy0 * wt1, wx1 * wy0 * wt1, wx0 * wy1 * wt1, wx1 * wy1 * wt1};

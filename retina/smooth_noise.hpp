@@ -19,7 +19,10 @@ struct SmoothNoiseParams {
   double clip = 2.0;       // values are clipped to [-clip, clip]
 };
 
-// The field on a width x height frame at time t_s (CV_32F).
-cv::Mat smooth_noise(cv::Size size, double t_s, const SmoothNoiseParams& p, std::uint64_t seed, RandomStream stream);
+// The field on a width x height frame at time t_s (CV_32F); pixel (x, y)
+// takes the field's value at (x - origin.x, y - origin.y), so a moving
+// origin (the gaze) carries the pattern with it.
+cv::Mat smooth_noise(cv::Size size, double t_s, const SmoothNoiseParams& p, std::uint64_t seed, RandomStream stream,
+                     cv::Point2d origin = {0.0, 0.0});
 
 }  // namespace eyestream::retina
