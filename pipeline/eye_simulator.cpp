@@ -133,6 +133,13 @@ EyeMemory EyeSimulator::save() const {
   return m;
 }
 
+std::string EyeSimulator::memory_error(const EyeMemory& m) const {
+  const auto finite = [](const std::optional<double>& v) { return !v || std::isfinite(*v); };
+  if (!finite(m.adaptation_log) || !finite(m.pupil_mm) || (m.pupil_mm && !(*m.pupil_mm > 0.0 && *m.pupil_mm < 20.0)))
+    return "adaptation or pupil out of range";
+  return retina_->memory_error(m.retina);
+}
+
 void EyeSimulator::restore(const EyeMemory& m) {
   adaptation_ = m.adaptation_log;
   pupil_ = m.pupil_mm;

@@ -64,7 +64,10 @@ class EyeSimulator {
 
   double adaptation_log() const { return adaptation_.value_or(plan_.dark_log); }
   EyeMemory save() const;
+  // restore() takes what save() gave; memory_error() says what is wrong
+  // with a memory from elsewhere (a checkpoint file), empty when nothing.
   void restore(const EyeMemory& memory);
+  std::string memory_error(const EyeMemory& memory) const;
   const RetinaStage& retina() const { return *retina_; }
   const GlareStage* glare() const { return glare_.get(); }
 

@@ -73,10 +73,8 @@ void GlareStage::add_surround(cv::Mat& retinal, const glare::PsfWeights& w, doub
 }
 
 bool GlareStage::Cache::matches(const cv::Mat& rgb, const glare::PsfWeights& w, double s) const {
-  const auto near = [](double a, double b) { return std::abs(a - b) <= kWeightTolerance; };
-  if (scene.empty() || scene.size() != rgb.size() || !near(w.core, weights.core) || !near(w.inner, weights.inner) ||
-      !near(w.outer, weights.outer) || !near(w.halo, weights.halo) ||
-      std::abs(s - surround) > kWeightTolerance * std::max(s, surround))
+  if (scene.empty() || scene.size() != rgb.size() || w.core != weights.core || w.inner != weights.inner ||
+      w.outer != weights.outer || w.halo != weights.halo || s != surround)
     return false;
   const size_t row_bytes = size_t(rgb.cols) * rgb.elemSize();
   for (int y = 0; y < rgb.rows; ++y)
@@ -93,10 +91,16 @@ void GlareStage::Cache::keep(const cv::Mat& rgb, const glare::PsfWeights& w, dou
 
 cv::Mat GlareStage::apply(const cv::Mat& rgb, double adaptation_log, double surround, double pupil_mm,
                           bool* ran) {
-  const glare::PsfWeights w = pupil_mm > 0.0 ? optics_.weights(adaptation_log, pupil_mm) : optics_.weights(adaptation_log);
+  // The optics' inputs are quantised (1e-4 log10 units, 1e-3 mm: weight
+  // changes below 1e-5), so a still frame reuses its glare until they move,
+  // and a run resumed from a checkpoint computes exactly what it reused.
+  const double a = std::round(adaptation_log * 1e4) / 1e4;
+  const glare::PsfWeights w =
+      pupil_mm > 0.0 ? optics_.weights(a, std::round(pupil_mm * 1e3) / 1e3) : optics_.weights(a);
   if (plan_.glare.full) {
-    // A uniform field (and surround) comes back as it is, within kUniform;
-    // a frame and optics equal to the last ones give the last result.
+    // A uniform field (and surround) comes back as it is, within
+    // kUniformTolerance; a frame and optics equal to the last ones give the
+    // last result.
     const bool uniform = glare::is_uniform_field(rgb, surround, kUniformTolerance);
     if (plan_.skip && uniform) {
       if (ran) *ran = false;

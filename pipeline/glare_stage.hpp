@@ -25,19 +25,14 @@ class GlareStage {
   // beyond the frame) scatters in, so a uniform field stays uniform up to
   // the frame's edge. Unless the plan says not to skip, a uniform field
   // (uniform_field.hpp, within kUniformTolerance) is returned as it is, and
-  // a frame equal to the last one, with the same optics (weights within
-  // kWeightTolerance), returns the last result; *ran is false then. Mode "excess" spreads only the light above the display
-  // peak, colour kept, and adds it back (Spencer et al. 1995; Yoshida et al.
-  // 2008: the glare illusion on a display that shows the rest at its true
-  // luminance); with nothing above the peak there is no glare work.
+  // a frame equal to the last one, with the same optics (adaptation and
+  // pupil quantised to 1e-4 log10 units and 1e-3 mm), returns the last
+  // result; *ran is false then.
   cv::Mat apply(const cv::Mat& rgb, double adaptation_log, double surround_cd_m2, double pupil_mm = 0.0,
                 bool* ran = nullptr);
 
-  // The error bounds of skipping: relative, on a uniform field; absolute,
-  // on each PSF weight (the smallest non-zero weight is about 0.01, so a
-  // reused frame's glare is within 1e-5 of its own value).
+  // The error bound of skipping a uniform field (relative).
   static constexpr double kUniformTolerance = 1e-3;
-  static constexpr double kWeightTolerance = 1e-7;
 
   // The veiling luminance (cd/m^2) at (x, y) from the light more than
   // exclusion_deg away (glare/veiling_luminance.hpp), for the viewer at

@@ -50,6 +50,15 @@ void PreviewRenderer::restore(const std::vector<EyeMemory>& memories) {
   for (size_t i = 0; i < panels_.size(); ++i) panels_[i].eye->restore(memories[i]);
 }
 
+std::string PreviewRenderer::memory_error(const std::vector<EyeMemory>& memories) const {
+  if (memories.size() != panels_.size()) return "panels";
+  for (size_t i = 0; i < panels_.size(); ++i) {
+    const std::string e = panels_[i].eye->memory_error(memories[i]);
+    if (!e.empty()) return "panel " + std::to_string(i + 1) + ": " + e;
+  }
+  return "";
+}
+
 size_t PreviewRenderer::main_panel() const {
   for (size_t i = 0; i < panels_.size(); ++i)
     if (panels_[i].spec.viewer) return i;

@@ -31,6 +31,8 @@ class PreviewRenderer {
   // Checkpoints: every panel's memory, and back.
   std::vector<EyeMemory> save() const;
   void restore(const std::vector<EyeMemory>& memories);
+  // What is wrong with `memories` for these panels (empty: nothing).
+  std::string memory_error(const std::vector<EyeMemory>& memories) const;
   // The first viewer panel (the one logs and --state-exr follow).
   size_t main_panel() const;
   // Each panel's plan, headed by its label when there are several.

@@ -133,6 +133,27 @@ std::vector<cv::Mat> RetinaStage::save(bool& started) const {
   return mats;
 }
 
+std::string RetinaStage::memory_error(const std::vector<cv::Mat>& mats) const {
+  if (mats.size() != 6) return std::to_string(mats.size()) + " state matrices, not 6";
+  const cv::Size grid = state_.bleached().size();
+  const int type = state_.bleached().type();
+  const char* names[5] = {"bleaching", "calcium deficit", "bleaching equilibrium", "response", "last stimulus"};
+  const double highest[5] = {1.0, state_.calcium_max(), 1.0, 1.0, 1e30};
+  for (int i = 0; i < 5; ++i) {
+    const cv::Mat& m = mats[size_t(i)];
+    if (m.empty() && i >= 2) continue;
+    if (m.size() != grid || m.type() != type)
+      return std::string("the ") + names[i] + " matrix is " + std::to_string(m.cols) + "x" + std::to_string(m.rows) +
+             " of type " + std::to_string(m.type()) + ", the plan's grid " + std::to_string(grid.width) + "x" +
+             std::to_string(grid.height) + " of type " + std::to_string(type);
+    if (!cv::checkRange(m, true, nullptr, 0.0, highest[i] * (1 + 1e-6) + 1e-12))
+      return std::string("the ") + names[i] + " matrix holds values out of range";
+  }
+  const cv::Mat& book = mats[5];
+  if (book.total() != 3 || book.type() != CV_64F || !cv::checkRange(book)) return "the resting bookkeeping is malformed";
+  return "";
+}
+
 void RetinaStage::restore(const std::vector<cv::Mat>& mats, bool started) {
   CV_Assert(mats.size() == 6 && mats[5].total() == 3 && mats[5].type() == CV_64F);
   state_.restore({mats.begin(), mats.begin() + 4});

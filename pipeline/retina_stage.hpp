@@ -51,6 +51,9 @@ class RetinaStage {
   // whether it has started.
   std::vector<cv::Mat> save(bool& started) const;
   void restore(const std::vector<cv::Mat>& mats, bool started);
+  // What is wrong with `mats` for this plan's grid (empty: nothing): their
+  // count, each one's type and size, finite values within the state's range.
+  std::string memory_error(const std::vector<cv::Mat>& mats) const;
   const retina::RetinalGrid& grid() const { return grid_; }
 
  private:

@@ -92,7 +92,7 @@ void log_frame(const io::SceneFrame& frame, const FrameReport& r) {
 
 // Checks the checkpoint options and, with --resume, restores the eyes and
 // the report from the checkpoint; returns the first frame still to write.
-std::int64_t prepare_checkpoints(const Settings& s, std::uint64_t identity, io::FrameSink& sink,
+std::int64_t prepare_checkpoints(const Settings& s, const std::string& settings, io::FrameSink& sink,
                                  PreviewRenderer& renderer, ReportWriter* report) {
   if ((s.checkpoint_every > 0 || s.resume) && s.checkpoint.empty())
     throw UsageError("--checkpoint-every and --resume need --checkpoint FILE");
@@ -100,8 +100,11 @@ std::int64_t prepare_checkpoints(const Settings& s, std::uint64_t identity, io::
     throw UsageError("--checkpoint-every needs a PNG or EXR frame output; split a video with `eyestream chunks`");
   if (!s.resume) return 0;
   const Checkpoint c = read_checkpoint(s.checkpoint);
-  if (c.identity != identity || c.panels.size() != renderer.panels())
-    throw UsageError(s.checkpoint + ": written by a run with other settings or input; resume with the same command");
+  const std::string mismatch = checkpoint_mismatch(s.checkpoint, c, settings);
+  if (!mismatch.empty()) throw InputError(mismatch);
+  if (c.panels.size() != renderer.panels()) throw InputError(s.checkpoint + ": not a valid checkpoint (panels)");
+  const std::string wrong = renderer.memory_error(c.panels);
+  if (!wrong.empty()) throw InputError(s.checkpoint + ": not a valid checkpoint (" + wrong + ")");
   renderer.restore(c.panels);
   if (report) report->restore(c.report);
   io::remove_stale_partials(std::filesystem::path(s.output).parent_path());
@@ -129,8 +132,9 @@ RunSummary run(const Settings& s) {
   const size_t main = renderer.main_panel();
   const GazeTimeline timeline(samples, info.width / 2.0, info.height / 2.0);
   std::unique_ptr<ReportWriter> report = report_writer(s, renderer);
-  const std::uint64_t identity = run_identity(s, info);
-  const std::int64_t resume_from = prepare_checkpoints(s, identity, *sink, renderer, report.get());
+  const std::string settings = run_settings(s, info);
+  const std::uint64_t identity = run_identity(settings);
+  const std::int64_t resume_from = prepare_checkpoints(s, settings, *sink, renderer, report.get());
   const char* kill_at = std::getenv("EYESTREAM_TEST_KILL_AT_FRAME");  // crash injection for the resume test
 
   RunSummary summary;
@@ -158,7 +162,7 @@ RunSummary run(const Settings& s) {
     if (!s.state_exr.empty() && current->index == s.state_frame) renderer.eye(main).retina().write_state(s.state_exr);
     if (written && next && s.checkpoint_every > 0 && (current->index + 1 - s.start_frame) % s.checkpoint_every == 0) {
       sink->commit_so_far();  // the frames so far must outlive a crash
-      write_checkpoint(s.checkpoint, {identity, current->index + 1, report ? report->save() : nlohmann::json(),
+      write_checkpoint(s.checkpoint, {identity, settings, current->index + 1, report ? report->save() : nlohmann::json(),
                                       renderer.save()});
     }
     if (kill_at && std::atoll(kill_at) == current->index) std::_Exit(137);

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <cstring>
+#include <fstream>
 #include <filesystem>
 
 #include "tests/test_support.hpp"
@@ -41,14 +43,84 @@ TEST(Checkpoint, ResumeAfterAKillGivesTheUninterruptedBytes) {
   }
   EXPECT_EQ(test::read_bytes(dir / "full.csv"), test::read_bytes(dir / "part.csv"));
   EXPECT_EQ(test::read_bytes(dir / "full.json"), test::read_bytes(dir / "part.json"));
-  // Other settings: refused, naming the checkpoint.
+  // Other settings: refused, naming the checkpoint and the setting.
   r = test::run_eyestream(part + " --resume --viewer-age 60");
-  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(r.exit_code, 3) << r.output;
   EXPECT_NE(r.output.find("state.ckp: written by a run with other settings"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("viewer-age=25, this run has viewer-age=60"), std::string::npos) << r.output;
   // Videos cannot be checkpointed: say so.
   r = test::run_eyestream(in + " -o " + (dir / "v.mp4") + " --checkpoint " + (dir / "v.ckp") + " --checkpoint-every 5");
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("eyestream chunks"), std::string::npos) << r.output;
+}
+
+// FNV-1a, 64 bits, as the checkpoint's checksum is defined (checkpoint.hpp).
+std::uint64_t fnv1a(const std::string& bytes, size_t from) {
+  std::uint64_t h = 1469598103934665603ULL;
+  for (size_t i = from; i < bytes.size(); ++i) h = (h ^ static_cast<unsigned char>(bytes[i])) * 1099511628211ULL;
+  return h;
+}
+
+std::uint64_t u64_at(const std::string& bytes, size_t at) {
+  std::uint64_t v;
+  std::memcpy(&v, bytes.data() + at, 8);
+  return v;
+}
+
+void put_u64_at(std::string& bytes, size_t at, std::uint64_t v) { std::memcpy(bytes.data() + at, &v, 8); }
+
+// A corrupt or malformed checkpoint is refused, exit 3, naming the file and
+// what is wrong, before any state is touched (it could corrupt memory).
+TEST(Checkpoint, CorruptAndMalformedCheckpointsAreRefusedNamingWhatIsWrong) {
+  test::ScratchDir dir;
+  ASSERT_EQ(test::run_eyestream("sample night-drive -o " + (dir / "nd") + " --width 64 --height 36 --duration 0.5")
+                .exit_code,
+            0);
+  const std::string cmd = "run -i " + (dir / "nd/frames") + " -g " + (dir / "nd/gaze.csv") + " -o " +
+                          (dir / "out/%05d.png") + " --checkpoint " + (dir / "s.ckp");
+  ASSERT_EQ(test::run_eyestream(cmd + " --checkpoint-every 5").exit_code, 0);
+  const std::string good = test::read_bytes(dir / "s.ckp");
+  const size_t magic = 23;  // "EYESTREAM-CHECKPOINT-2\n"
+  ASSERT_EQ(good.substr(0, magic), "EYESTREAM-CHECKPOINT-2\n");
+  ASSERT_EQ(u64_at(good, magic), fnv1a(good, magic + 8)) << "the checksum is FNV-1a of the rest";
+  auto resume_with = [&](const std::string& bytes) {
+    std::ofstream(dir / "s.ckp", std::ios::binary) << bytes;
+    return test::run_eyestream(cmd + " --resume");
+  };
+  // One flipped byte in the state.
+  std::string flipped = good;
+  flipped[flipped.size() - 100] ^= 0x40;
+  auto r = resume_with(flipped);
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_NE(r.output.find("s.ckp: checkpoint is corrupt"), std::string::npos) << r.output;
+  // A calcium-deficit matrix with half the rows of the bleaching matrix,
+  // checksum recomputed: the sizes are checked against the plan.
+  const size_t json_at = magic + 16, json_length = u64_at(good, magic + 8);
+  size_t at = json_at + json_length;  // the first matrix: type, rows, cols, data
+  const std::uint64_t type = u64_at(good, at), rows = u64_at(good, at + 8), cols = u64_at(good, at + 16);
+  const size_t element = (type % 8 == 6 ? 8 : 4) * (1 + type / 8), first = 24 + rows * cols * element;
+  std::string shrunk = good;
+  at += first;  // the second matrix
+  put_u64_at(shrunk, at + 8, rows / 2);
+  shrunk.erase(at + 24 + (rows / 2) * cols * element, (rows - rows / 2) * cols * element);
+  put_u64_at(shrunk, magic, fnv1a(shrunk, magic + 8));
+  r = resume_with(shrunk);
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_NE(r.output.find("s.ckp: not a valid checkpoint (panel 1: the calcium deficit matrix is"), std::string::npos)
+      << r.output;
+  // An absurd matrix count.
+  std::string absurd = good;
+  const size_t count_at = absurd.find("\"matrices\":6");
+  ASSERT_NE(count_at, std::string::npos);
+  absurd.replace(count_at, 13, "\"matrices\":1000000000000");
+  put_u64_at(absurd, magic + 8, u64_at(absurd, magic + 8) + 12);
+  put_u64_at(absurd, magic, fnv1a(absurd, magic + 8));
+  r = resume_with(absurd);
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_NE(r.output.find("s.ckp: not a valid checkpoint"), std::string::npos) << r.output;
+  // The good one still resumes.
+  r = resume_with(good);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
 }
 
 }  // namespace
