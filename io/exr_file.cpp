@@ -1,5 +1,7 @@
 #include "io/exr_file.hpp"
 
+#include <cmath>
+
 #include <Imath/half.h>
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
@@ -12,6 +14,7 @@
 #include <vector>
 
 #include "io/error.hpp"
+#include "io/primaries.hpp"
 
 namespace eyestream::io {
 
@@ -49,11 +52,25 @@ ExrImage read_exr(const std::string& path, std::int64_t max_pixels) {
     ExrImage image;
     image.channels = channel_layout(header.channels());
     if (image.channels.empty()) throw InputError(path + ": no R,G,B or Y channels");
-    if (Imf::hasWhiteLuminance(header)) image.white_luminance = Imf::whiteLuminance(header);
-    if (Imf::hasChromaticities(header)) image.chromaticities = from_imf(Imf::chromaticities(header));
+    // Metadata that would silently give black frames or absurd timing is
+    // refused, naming the attribute (--scale and --fps override them).
+    if (Imf::hasWhiteLuminance(header)) {
+      const double white = Imf::whiteLuminance(header);
+      if (!(white > 0.0) || !std::isfinite(white))
+        throw InputError(path + ": whiteLuminance " + std::to_string(white) + " is not a positive luminance (--scale overrides it)");
+      image.white_luminance = white;
+    }
+    if (Imf::hasChromaticities(header)) {
+      image.chromaticities = from_imf(Imf::chromaticities(header));
+      if (!valid_chromaticities(*image.chromaticities))
+        throw InputError(path + ": chromaticities do not describe three independent primaries and a white");
+    }
     if (Imf::hasFramesPerSecond(header)) {
       const Imf::Rational& r = Imf::framesPerSecond(header);
-      if (r.d != 0 && r.n > 0) image.frames_per_second = double(r.n) / double(r.d);
+      const double fps = r.d != 0 ? double(r.n) / double(r.d) : 0.0;
+      if (r.n > 0 && r.d != 0 && !(fps >= 0.01 && fps <= 10000.0))
+        throw InputError(path + ": framesPerSecond " + std::to_string(fps) + " is outside 0.01-10000 (--fps overrides it)");
+      if (r.d != 0 && r.n > 0) image.frames_per_second = fps;
     }
 
     image.rgb.create(int(height), int(width), CV_32FC3);

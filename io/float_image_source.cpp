@@ -6,6 +6,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "io/error.hpp"
+#include "io/float_image_header.hpp"
 #include "io/staged_file.hpp"
 
 namespace eyestream::io {
@@ -47,7 +48,17 @@ std::optional<SceneFrame> FloatImageSource::next() {
   if (position_ >= entries_.size()) return std::nullopt;
   const SequenceEntry& entry = entries_[position_];
   const std::int64_t index = std::int64_t(position_++);
-  const cv::Mat bgr = cv::imread(entry.path, cv::IMREAD_UNCHANGED);
+  // The declared size is checked before the image is decoded.
+  const cv::Size declared = float_image_size(entry.path);
+  if (declared.width * std::int64_t(declared.height) > options_.max_pixels)
+    throw InputError(entry.path + ": " + std::to_string(declared.width) + "x" + std::to_string(declared.height) +
+                     " exceeds the limit of " + std::to_string(options_.max_pixels) + " pixels (--max-pixels)");
+  cv::Mat bgr;
+  try {
+    bgr = cv::imread(entry.path, cv::IMREAD_UNCHANGED);
+  } catch (const cv::Exception&) {
+    throw InputError(entry.path + ": cannot read as a floating-point RGB image");
+  }
   if (bgr.empty() || bgr.depth() != CV_32F || (bgr.channels() != 3 && bgr.channels() != 1))
     throw InputError(entry.path + ": cannot read as a floating-point RGB image");
   if (index == 0 && info_.width == 0) info_.width = bgr.cols, info_.height = bgr.rows;

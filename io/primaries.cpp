@@ -32,6 +32,16 @@ cv::Matx33d bradford(const cv::Vec3d& src, const cv::Vec3d& dst) {
 
 }  // namespace
 
+bool valid_chromaticities(const Chromaticities& c) {
+  const double v[8] = {c.rx, c.ry, c.gx, c.gy, c.bx, c.by, c.wx, c.wy};
+  for (double x : v)
+    if (!std::isfinite(x)) return false;
+  if (!(c.ry > 0 && c.gy > 0 && c.by > 0 && c.wy > 0)) return false;
+  // The primaries span a triangle of non-zero area.
+  const double area = (c.gx - c.rx) * (c.by - c.ry) - (c.bx - c.rx) * (c.gy - c.ry);
+  return std::abs(area) > 1e-6;
+}
+
 cv::Matx33d to_rec709_matrix(const Chromaticities& from) {
   Chromaticities to = rec709_chromaticities();
   cv::Matx33d adapt = bradford(xyz_of(from.wx, from.wy), xyz_of(to.wx, to.wy));

@@ -14,6 +14,10 @@ struct Chromaticities {
 Chromaticities rec709_chromaticities();
 Chromaticities bt2020_chromaticities();
 
+// True when the values are finite, every y is positive and the primaries
+// span a triangle (a singular set would give a singular matrix).
+bool valid_chromaticities(const Chromaticities& c);
+
 // 3x3 matrix taking linear RGB in `from` to linear Rec.709 (column vectors:
 // out = M * in). White of `from` is carried to D65 by the Bradford
 // transform, so `from`'s white (1,1,1) maps to Rec.709 white (1,1,1).

@@ -41,6 +41,7 @@ struct VideoReader::Impl {
   int stream = -1;
   VideoColour colour;
   std::int64_t decoded = 0;
+  int width = 0, height = 0;  // the stream's size when opened
   std::optional<std::int64_t> first_pts;
   bool draining = false, done = false;
 
@@ -65,6 +66,8 @@ struct VideoReader::Impl {
     if (!codec || avcodec_parameters_to_context(codec, par) < 0) fail("cannot set up the decoder");
     codec->thread_count = 1;  // decoded pictures do not depend on it; one thread keeps memory flat
     if (avcodec_open2(codec, decoder, nullptr) < 0) fail("cannot open the decoder");
+    width = codec->width;
+    height = codec->height;
     packet = av_packet_alloc();
     frame = av_frame_alloc();
     colour.transfer = name_or_unknown(av_color_transfer_name(par->color_trc));
@@ -106,6 +109,11 @@ struct VideoReader::Impl {
   }
 
   cv::Mat to_rgb() {
+    if (width <= 0 || height <= 0) width = frame->width, height = frame->height;
+    if (frame->width != width || frame->height != height)
+      fail("frame " + std::to_string(decoded) + " is " + std::to_string(frame->width) + "x" +
+           std::to_string(frame->height) + ", the video began at " + std::to_string(width) + "x" +
+           std::to_string(height) + " (a video whose size changes is not supported)");
     const AVPixelFormat src = AVPixelFormat(frame->format);
     sws = sws_getCachedContext(sws, frame->width, frame->height, src, frame->width, frame->height,
                                AV_PIX_FMT_RGB48LE, SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT, nullptr,
@@ -133,8 +141,8 @@ VideoReader::VideoReader(const std::string& path) : impl_(std::make_unique<Impl>
 
 VideoReader::~VideoReader() = default;
 
-int VideoReader::width() const { return impl_->codec->width; }
-int VideoReader::height() const { return impl_->codec->height; }
+int VideoReader::width() const { return impl_->width; }
+int VideoReader::height() const { return impl_->height; }
 double VideoReader::frames_per_second() const {
   const AVRational r = impl_->format->streams[impl_->stream]->avg_frame_rate;
   return r.den ? av_q2d(r) : 0.0;

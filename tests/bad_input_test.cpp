@@ -2,6 +2,7 @@
 // a message naming the culprit, and nothing left at the output path.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 
 #include "io/exr_file.hpp"
@@ -84,6 +85,17 @@ TEST_F(BadInput, OutOfRangeOption) {
 }
 
 TEST_F(BadInput, UnknownOption) { expect({"unknown option", 2, "--viewr-age"}, "--viewr-age 25"); }
+
+// A command-line error is one line like every other refusal.
+TEST_F(BadInput, ACommandLineErrorIsOneErrorLine) {
+  for (const std::string args : {"run -i " + (dir_ / "f_%d.exr") + " -o " + (dir_ / "out.mp4") + " --viewr-age 25",
+                                 std::string("run -i x.exr"), std::string("--frobnicate")}) {
+    const auto r = test::run_eyestream(args);
+    EXPECT_EQ(r.exit_code, 2) << args;
+    EXPECT_EQ(r.output.rfind("eyestream: error: ", 0), 0u) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  }
+}
 
 // Looking off the frame is allowed: the eye sees the surround there.
 TEST_F(BadInput, GazeOutsideTheFrameSeesTheSurround) {
