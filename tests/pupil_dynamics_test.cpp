@@ -52,6 +52,7 @@ TEST(PupilDynamics, ConstrictsInTenthsOfASecondAndDilatesOverSeconds) {
   EXPECT_NEAR(up[size_t(fps) - 1], d_dark, 1e-6) << "at rest in the dark";
   const double half = 0.5 * (d_dark + d_bright);
   EXPECT_LT(up[size_t(1.3 * fps)], half) << "constricted past half way 0.3 s after the light";
+  EXPECT_GT(up[size_t(fps)], half) << "but not at once: a frame after the light, less than half way";
   // Bright for 1 s, then dark: less than half the way back after 0.8 s.
   const std::vector<double> down = pupil_track([&](double t) { return t < 1.0 ? bright : dark; }, 3.0, fps);
   EXPECT_LT(down[size_t(1.8 * fps)], half) << "dilation is slow";
