@@ -24,10 +24,16 @@ PsfWeights psf_weights(const ViewerProfile& viewer, double a, double pupil_mm) {
                  : a <= middle  ? mix(kScotopic, kMesopic, (a - scotopic) / (middle - scotopic))
                  : a < photopic ? mix(kMesopic, kPhotopic, (a - middle) / (photopic - middle))
                                 : kPhotopic;
-  // Age (seed 000 eq. 10) moves 6.9e-9 A^4 from f0 to f2. Past about 85
-  // years that would take more than the core has: the move stops at 90 % of
-  // the core, so the weights stay valid and nothing is renormalised away
-  // from the corona at any age.
+  // The halo needs a pupil wider than about 3 mm; what it loses goes back to the core.
+  const double f = std::clamp((pupil_mm - 2.5) / 1.0, 0.0, 1.0);
+  const double halo = w.halo * f * f * (3.0 - 2.0 * f);
+  w.core += w.halo - halo;
+  w.halo = halo;
+  // Age (seed 000 eq. 10) moves 6.9e-9 A^4 from f0 to f2. At great ages
+  // that would take more than the core has: the move stops at 90 % of the
+  // core (reached near 85 years with photopic weights, 78 with scotopic),
+  // so the weights stay valid and nothing is renormalised away from the
+  // corona at any age.
   const double aging = std::min(6.9e-9 * std::pow(viewer.age_years, 4.0), 0.9 * w.core);
   w.core -= aging;
   w.outer += aging;
@@ -35,10 +41,6 @@ PsfWeights psf_weights(const ViewerProfile& viewer, double a, double pupil_mm) {
   const double hazed = std::clamp(viewer.haze, 0.0, 1.0) * w.core;
   w.core -= hazed;
   w.outer += hazed;
-  const double f = std::clamp((pupil_mm - 2.5) / 1.0, 0.0, 1.0);
-  const double halo = w.halo * f * f * (3.0 - 2.0 * f);
-  w.core += w.halo - halo;
-  w.halo = halo;
   return w;
 }
 

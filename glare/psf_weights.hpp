@@ -17,12 +17,12 @@ struct PsfWeights {
 // blended piecewise-linearly in log adaptation luminance: Ps at and below
 // 0.01 cd/m^2, Pm at the log-middle of the mesopic range (0.17 cd/m^2), Pp
 // at and above 3 cd/m^2, so glare never pops between frames (MODEL.md 1.1).
-// The age term moves 6.9e-9 A^4 from f0 to f2 (seed 000 eq. 10; at most 90 %
-// of the core, reached near age 85), then haze moves its share of what is
-// left of the core the same way (seed 004: haze adds bloom). The halo
-// needs a pupil wider than about 3 mm (the lens fibres sit behind the iris
-// otherwise): its weight is ramped by smoothstep((D - 2.5 mm) / 1 mm), and
-// what it loses goes back to the core. The weights are never negative and sum
+// The halo needs a pupil wider than about 3 mm (the lens fibres sit behind
+// the iris otherwise): its weight is ramped by smoothstep((D - 2.5 mm) /
+// 1 mm), and what it loses goes back to the core. Then the age term moves
+// 6.9e-9 A^4 from f0 to f2 (seed 000 eq. 10; at most 90 % of the core), and
+// haze moves its share of what is left of the core the same way (seed 004:
+// haze adds bloom). The weights are never negative and sum
 // to 1; no component is renormalised.
 PsfWeights psf_weights(const ViewerProfile& viewer, double adaptation_log, double pupil_mm);
 

@@ -11,9 +11,11 @@ bool is_uniform_field(const cv::Mat& rgb, double surround, double tolerance) {
     cv::minMaxLoc(channels[c], &lo[c], &hi[c]);
     if (!(lo[c] >= 0.0) || hi[c] > (1.0 + tolerance) * lo[c]) return false;
   }
-  const double l_lo = 0.2126 * lo[0] + 0.7152 * lo[1] + 0.0722 * lo[2];
-  const double l_hi = 0.2126 * hi[0] + 0.7152 * hi[1] + 0.0722 * hi[2];
-  return surround >= l_lo / (1.0 + tolerance) && surround <= l_hi * (1.0 + tolerance);
+  // The surround is grey: every channel must match it too, or a coloured
+  // field would take the surround's colour at its edges.
+  for (int c = 0; c < 3; ++c)
+    if (surround < lo[c] / (1.0 + tolerance) || surround > hi[c] * (1.0 + tolerance)) return false;
+  return true;
 }
 
 }  // namespace eyestream::glare

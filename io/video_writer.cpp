@@ -98,8 +98,10 @@ struct VideoWriter::Impl {
     // depended on what lay beside them (the thread count, the timing): on a
     // CPU with AVX-512, x264 is held to its AVX2 kernels, with which the
     // bytes depend on the frames alone (tests/end_to_end_test.cpp).
+#if defined(__x86_64__) || defined(__i386__)
     if (options.codec != "hevc" && __builtin_cpu_supports("avx512f"))
       av_dict_set(&opts, "x264-params", "asm=avx2,fma3,bmi2,lzcnt", 0);
+#endif
     rc = avcodec_open2(codec, encoder, &opts);
     av_dict_free(&opts);
     if (rc < 0) fail(std::string("cannot open the ") + encoder_name + " encoder", rc);

@@ -60,9 +60,10 @@ cv::Mat get_mat(Reader& in) {
   if (rows == 0 || cols == 0 || rows > 65536 || cols > 65536 || type > CV_64FC4)
     throw InputError(in.path + ": not a valid checkpoint (a state matrix of " + std::to_string(rows) + "x" +
                      std::to_string(cols) + ")");
+  const std::uint64_t size = rows * cols * std::uint64_t(CV_ELEM_SIZE(static_cast<int>(type)));
+  const char* data = in.take(size_t(size));  // refuses a size the file does not hold, before allocating
   cv::Mat m(static_cast<int>(rows), static_cast<int>(cols), static_cast<int>(type));
-  const size_t size = m.total() * m.elemSize();
-  std::memcpy(m.data, in.take(size), size);
+  std::memcpy(m.data, data, size_t(size));
   return m;
 }
 

@@ -32,7 +32,7 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
   StageTimes times;
   const retina::LuminanceField scene_field(scene, plan_.dark_cd_m2);
   const double surround = plan_.surround_from_edge
-                              ? std::max(scene_field.edge_mean(plan_.pixels_per_degree), plan_.dark_cd_m2)
+                              ? retina::edge_log_mean(scene, plan_.pixels_per_degree, plan_.dark_cd_m2)
                               : plan_.surround_cd_m2;
   const double field_log = std::log10(std::max(scene_field.frame_mean(), plan_.dark_cd_m2));
   const auto pupil_target = [&](bool closed) {
@@ -46,7 +46,7 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
   const double optics_log =
       adaptation_ ? *adaptation_ : scene_field.patch_log_mean(first.x, first.y, plan_.patch_half_px, surround);
   if (!pupil_) pupil_ = pupil_target(false);
-  const cv::Mat retinal = glare_ ? glare_->apply(scene, optics_log, surround, *pupil_, &active.glare) : scene;
+  const cv::Mat retinal = glare_ ? glare_->apply(scene, optics_log, surround, *pupil_, &active.glare, &active.glare_reused) : scene;
   times.glare_ms = lap_ms(clock);
 
   // Global adaptation: one exact step per gaze segment (Jacobs et al. 2015

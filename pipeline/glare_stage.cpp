@@ -90,7 +90,8 @@ void GlareStage::Cache::keep(const cv::Mat& rgb, const glare::PsfWeights& w, dou
 }
 
 cv::Mat GlareStage::apply(const cv::Mat& rgb, double adaptation_log, double surround, double pupil_mm,
-                          bool* ran) {
+                          bool* ran, bool* reused) {
+  if (reused) *reused = false;
   // The optics' inputs are quantised (1e-4 log10 units, 1e-3 mm: weight
   // changes below 1e-5), so a still frame reuses its glare until they move,
   // and a run resumed from a checkpoint computes exactly what it reused.
@@ -108,6 +109,7 @@ cv::Mat GlareStage::apply(const cv::Mat& rgb, double adaptation_log, double surr
     }
     if (plan_.skip && cache_.matches(rgb, w, surround)) {
       if (ran) *ran = false;
+      if (reused) *reused = true;
       return cache_.retinal;
     }
     if (ran) *ran = true;

@@ -27,9 +27,9 @@ class GlareStage {
   // (uniform_field.hpp, within kUniformTolerance) is returned as it is, and
   // a frame equal to the last one, with the same optics (adaptation and
   // pupil quantised to 1e-4 log10 units and 1e-3 mm), returns the last
-  // result; *ran is false then.
+  // result; *ran is false then (and *reused true for the reuse).
   cv::Mat apply(const cv::Mat& rgb, double adaptation_log, double surround_cd_m2, double pupil_mm = 0.0,
-                bool* ran = nullptr);
+                bool* ran = nullptr, bool* reused = nullptr);
 
   // The error bound of skipping a uniform field (relative).
   static constexpr double kUniformTolerance = 1e-3;

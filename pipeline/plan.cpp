@@ -20,9 +20,9 @@ Plan compile_plan(const Settings& s, const io::SourceInfo& source) {
   p.patch_half_px = 0.5 * s.adaptation_patch_deg * p.pixels_per_degree;
   p.dark_cd_m2 = s.dark_cd_m2;
   p.dark_log = std::log10(s.dark_cd_m2);
-  p.surround_cd_m2 = std::max(s.surround_cd_m2, s.dark_cd_m2);
+  p.surround_from_edge = !s.surround_cd_m2.has_value();
+  p.surround_cd_m2 = std::max(s.surround_cd_m2.value_or(1.0), s.dark_cd_m2);
   p.surround_log = std::log10(p.surround_cd_m2);
-  p.surround_from_edge = s.surround_mode == "edge";
   p.pupil = s.pupil_dynamics;
   p.adaptation = s.adaptation;
   p.tone = s.tone;
@@ -103,19 +103,19 @@ std::string Plan::describe() const {
     << "mesopic = " << (mesopic.enabled ? "on" : "off") << " (rho from " << mesopic.colour.bottom_log << " to "
     << mesopic.colour.top_log << " log10 cd/m^2; acuity loss " << (mesopic.acuity ? "on" : "off") << ")\n"
     << "surround = "
-    << (surround_from_edge ? "the frame's outer 1 deg band, frame by frame"
+    << (surround_from_edge ? "the geometric mean of the frame's outer 1 deg band, frame by frame"
                            : std::to_string(surround_cd_m2) + " cd/m^2")
     << "\n"
     << "pupil = follows the field luminance, constricting with tau " << pupil.constrict_tau_s
     << " s, dilating with tau " << pupil.dilate_tau_s << " s\n"
     << "stages = "
-    << (glare.enabled ? (glare.full ? "glare (frames with a source 40 times brighter than its surroundings), "
+    << (glare.enabled ? (glare.full ? "glare (every frame but a uniform field or a still frame under the same optics), "
                                     : "glare (frames with light above the display peak), ")
                       : "")
-    << "adaptation, retina, tone curve, mesopic (colour below 1 cd/m^2 of adaptation, acuity below 56), afterimages, display encoding"
+    << "adaptation, retina, tone curve, mesopic (below 7.5 cd/m^2 of adaptation), afterimages, display encoding"
     << (encoding.dither ? " (dithered)" : "") << "\n"
     << "skipping = "
-    << (skip ? "on (glare without a visible source; retina and afterimages at rest; acuity loss "
+    << (skip ? "on (glare on a uniform field or a still frame; retina and afterimages at rest; acuity loss "
                "where no band can be lost)"
              : "off (--no-skip: every stage runs on every frame)")
     << "\n";

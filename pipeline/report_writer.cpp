@@ -47,7 +47,7 @@ void ReportWriter::add(std::int64_t frame, double time_s, size_t viewer, const F
   const double veiled = target_veil ? luminance_contrast(r.target_cd_m2, r.background_cd_m2, r.target_veil_cd_m2) : 0.0;
   rows_ += std::to_string(frame) + "," + number(time_s) + "," + viewers_[viewer].label + "," + number(r.gaze_x) + "," +
            number(r.gaze_y) + "," + (r.eye_closed ? "closed" : "open") + "," + number(adaptation) + "," +
-           number(r.pupil_mm) + "," + number(r.peak_cd_m2) + "," + (r.active.glare ? "1" : "0") + "," +
+           number(r.pupil_mm) + "," + number(r.peak_cd_m2) + "," + (r.active.glare || r.active.glare_reused ? "1" : "0") + "," +
            field(veil, r.veil_cd_m2) + "," + field(veil, r.ti_percent) + "," +
            (glare::threshold_increment_valid(adaptation) ? "1" : "0") + "," + field(target, r.target_cd_m2) + "," +
            field(target, r.background_cd_m2) + "," + field(target_veil, r.target_veil_cd_m2) + "," +
@@ -56,7 +56,7 @@ void ReportWriter::add(std::int64_t frame, double time_s, size_t viewer, const F
            (r.active.acuity ? "1" : "0") + "\n";
   Summary& s = summary_[viewer];
   ++s.frames;
-  s.glare_frames += r.active.glare;
+  s.glare_frames += r.active.glare || r.active.glare_reused;
   s.closed_frames += r.eye_closed;
   s.min_adaptation = std::min(s.min_adaptation, adaptation);
   s.max_adaptation = std::max(s.max_adaptation, adaptation);

@@ -66,7 +66,6 @@ void RetinaStage::advance(const cv::Mat& rgb, const std::vector<GazeSegment>& se
     const cv::Mat stimulus = g.closed ? dark_ : grid_.sample(lms, g.x, g.y, surround);
     const double curve_log = adaptation_log[g.last];
     const retina::ToneCurve curve(curve_log, plan_.tone);
-    frame_dt += g.dt;
     if (!started_) {
       state_.rest(stimulus, curve);
       started_ = true;
@@ -76,6 +75,7 @@ void RetinaStage::advance(const cv::Mat& rgb, const std::vector<GazeSegment>& se
     }
     catch_up();
     state_.step(stimulus, curve, g.dt);
+    frame_dt += g.dt;  // time deferred at rest is softened by catch_up()
     last_stimulus_ = stimulus;
     last_curve_log_ = curve_log;
     resting_ = false;

@@ -43,12 +43,10 @@ ParamSet run_parameters(Settings& s) {
   set.add(number("display-diagonal", "m", "display diagonal; the frame fills the display", view,
                  &s.geometry.display_diagonal_m, 0.01, 100));
   set.add(number("viewing-distance", "m", "eye to display distance", view, &s.geometry.viewing_distance_m, 0.01, 1000));
-  set.add(choice("surround-mode",
-                 "what lies beyond the frame: the mean of its outer 1 deg band, frame by frame (edge), or --surround "
-                 "(fixed)",
-                 view, &s.surround_mode, {"edge", "fixed"}));
-  set.add(number("surround", "cd/m^2", "luminance beyond the frame with --surround-mode fixed", view, &s.surround_cd_m2,
-                 0, 1e9));
+  set.add(number("surround", "cd/m^2",
+                 "luminance beyond the frame (a display in a room); unset: the geometric mean of the frame's outer "
+                 "1 deg band, frame by frame",
+                 view, &s.surround_cd_m2, 0, 1e9));
   // Retina.
   set.add(number("adapt-rate-up", "log10 units/s", "adaptation rate toward brighter (a1)", eye,
                  &s.adaptation.rate_up_log_per_s, 0, 1000));

@@ -44,11 +44,10 @@ struct Settings {
   retina::ToneCurveParams tone;
   double adaptation_patch_deg = 1.5;  // side of the square patch around the gaze (MODEL.md 2.1: 1-2 deg)
   // What lies beyond the frame (seen by retina sites looking outside it,
-  // counted in the adaptation patch, scattered in by the glare): "edge", the
-  // world continues at the mean luminance of the frame's outer 1 deg band,
-  // frame by frame; "fixed", --surround cd/m^2 (a display in a room).
-  std::string surround_mode = "edge";
-  double surround_cd_m2 = 1.0;
+  // counted in the adaptation patch, scattered in by the glare): unset, the
+  // world continues at the geometric mean luminance of the frame's outer
+  // 1 deg band, frame by frame; set, that many cd/m^2 (a display in a room).
+  std::optional<double> surround_cd_m2;
   double dark_cd_m2 = 1e-6;           // what closed eyes see; floor of all log luminances
 
   // Optics.

@@ -8,7 +8,8 @@
 namespace eyestream::pipeline {
 
 struct StageActivity {
-  bool glare = false;        // something exceeded the display peak (or --no-skip)
+  bool glare = false;        // the glare was computed on this frame
+  bool glare_reused = false; // the last frame's glare was reused (a still frame): glare is in the picture
   bool retina = false;       // the photoreceptor state was stepped (not at rest on an unchanged stimulus)
   bool afterimages = false;  // afterimages were drawn (the retina was not at rest)
   bool mesopic = false;      // mesopic colour (adaptation below the photopic limit)

@@ -26,13 +26,39 @@ AcuityLoss::AcuityLoss(const AcuityParams& p, double pixels_per_degree, std::uin
   noise_.clip = p.noise_clip;
 }
 
+namespace {
+
+// The noise's share at rho: whole through the mesopic range, fading to
+// nothing across the first decade of photopic light (rho 1 to 1.5).
+double noise_share(double rho) { return std::clamp((1.5 - rho) / 0.5, 0.0, 1.0); }
+
+}  // namespace
+
 double AcuityLoss::rho_all_kept() const {
-  return *std::max_element(tau_.begin(), tau_.end()) + params_.noise_gain * params_.noise_clip;
+  // The lowest rho whose lowest possible level, rho - g clip share(rho),
+  // clears every threshold (the level rises with rho).
+  const double tau = *std::max_element(tau_.begin(), tau_.end());
+  const auto lowest = [&](double rho) { return rho - params_.noise_gain * params_.noise_clip * noise_share(rho); };
+  double lo = tau, hi = tau + params_.noise_gain * params_.noise_clip;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (lowest(mid) > tau ? hi : lo) = mid;
+  }
+  return hi;
 }
 
 cv::Mat AcuityLoss::level(const cv::Mat& rho, double t_s, double gaze_x, double gaze_y) const {
   cv::Mat x = smooth_noise(rho.size(), t_s, noise_, seed_, RandomStream::kAcuity, {gaze_x, gaze_y});
-  return rho + params_.noise_gain * x;  // seed 001 eq. 15: rho + g X
+  // seed 001 eq. 15: rho + g X, the noise fading out above rho = 1.
+  cv::Mat level(rho.size(), CV_32F);
+  const float g = float(params_.noise_gain);
+  for (int y = 0; y < rho.rows; ++y) {
+    const float* r = rho.ptr<float>(y);
+    const float* n = x.ptr<float>(y);
+    float* o = level.ptr<float>(y);
+    for (int i = 0; i < rho.cols; ++i) o[i] = r[i] + g * n[i] * float(noise_share(r[i]));
+  }
+  return level;
 }
 
 void acuity_blur(const cv::Mat& src, cv::Mat& dst, double sigma, double pyramid_from_px) {

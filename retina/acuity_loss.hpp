@@ -43,13 +43,14 @@ struct AcuityParams {
 // gaussian_cutoff_cpd(sigma_(k-1)) at 10 % contrast; band i is kept where
 // the luminance L_i of rho = tau_i resolves band_margin times its cutoff.
 // Octave bands make the resolution a staircase, and the stochastic
-// thresholds keep finer bands in places; with band_margin 1.8 the mean
-// resolution measured through the loss stays within 0.93 to 1.38 times the
-// human limit from 1e-3 to 1 cd/m^2 (tests/acuity_calibration_test.cpp).
-// Bands needing more than the eye resolves at 5.6 cd/m^2 (42 c/deg) share
-// the threshold of that level. With X clipped to +-2, every band is kept
-// once rho >= max tau + 2 g (56 cd/m^2), so photopic scenes are untouched
-// exactly.
+// thresholds keep finer bands in places; band_margin 1.8 centres the mean
+// resolution on the human limit: within a factor 1.5 of it from 1e-3 to
+// 10 cd/m^2 (tests/acuity_calibration_test.cpp). Bands needing more than
+// the eye resolves at 5.6 cd/m^2 (42 c/deg) share the threshold of that
+// level. The noise is the seed's through the mesopic range and fades out
+// across the first photopic decade (rho 1 to 1.5: cone vision's acuity is
+// not patchy), so with X clipped to +-2 every band is kept from rho 1.44
+// (7.5 cd/m^2) up: photopic scenes are untouched exactly.
 // Gaussian blur of `src` by sigma px (replicated border); a blur of at
 // least pyramid_from_px (> 0) runs on a copy reduced by a power of two.
 void acuity_blur(const cv::Mat& src, cv::Mat& dst, double sigma, double pyramid_from_px);

@@ -45,19 +45,30 @@ double LuminanceField::frame_mean() const {
   return integral_.at<double>(rows, cols) / (double(cols) * double(rows));
 }
 
-}  // namespace eyestream::retina
-
-namespace eyestream::retina {
-
-double LuminanceField::edge_mean(double band_px) const {
-  const int cols = integral_.cols - 1, rows = integral_.rows - 1;
+double edge_log_mean(const cv::Mat& rgb, double band_px, double floor_cd_m2) {
+  CV_Assert(rgb.type() == CV_32FC3);
   const int b = std::max(1, int(std::lround(band_px)));
-  if (2 * b >= cols || 2 * b >= rows) return frame_mean();
-  const double all = integral_.at<double>(rows, cols);
-  const double inner = integral_.at<double>(rows - b, cols - b) - integral_.at<double>(b, cols - b) -
-                       integral_.at<double>(rows - b, b) + integral_.at<double>(b, b);
-  const double count = double(cols) * rows - double(cols - 2 * b) * (rows - 2 * b);
-  return (all - inner) / count;
+  const bool all = 2 * b >= rgb.cols || 2 * b >= rgb.rows;
+  const double floor_log = std::log10(floor_cd_m2);
+  double sum = 0.0;
+  std::int64_t count = 0;
+  const auto add = [&](const cv::Vec3f* in, int from, int to) {
+    for (int x = from; x < to; ++x) {
+      const float l = photopic_luminance(in[x]);
+      sum += (l > floor_cd_m2 && std::isfinite(l)) ? std::log10(double(l)) : floor_log;
+      ++count;
+    }
+  };
+  for (int y = 0; y < rgb.rows; ++y) {
+    const cv::Vec3f* in = rgb.ptr<cv::Vec3f>(y);
+    if (all || y < b || y >= rgb.rows - b) {
+      add(in, 0, rgb.cols);
+    } else {
+      add(in, 0, b);
+      add(in, rgb.cols - b, rgb.cols);
+    }
+  }
+  return std::pow(10.0, sum / double(count));
 }
 
 }  // namespace eyestream::retina

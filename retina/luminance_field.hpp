@@ -23,12 +23,16 @@ class LuminanceField {
 
   // Mean luminance of the whole frame (cd/m^2).
   double frame_mean() const;
-  // Mean luminance of the band of width band_px along the frame's edge (the
-  // whole frame when the band covers it).
-  double edge_mean(double band_px) const;
 
  private:
   cv::Mat integral_;  // CV_64F, (rows+1) x (cols+1)
 };
+
+// The geometric mean luminance (cd/m^2) of the band of width band_px along
+// the frame's edge (the whole frame when the band covers it): what the
+// world beyond the frame is taken to be. Geometric, so one bright light in
+// the band does not light the whole surround. Luminance below floor_cd_m2
+// (and non-finite) counts as floor_cd_m2.
+double edge_log_mean(const cv::Mat& rgb, double band_px, double floor_cd_m2);
 
 }  // namespace eyestream::retina

@@ -55,10 +55,11 @@ double transfer(const AcuityLoss& loss, double ppd, double f, double log_l) {
 
 // At each luminance the grating at 1/1.5 of the human limit passes at 10 %
 // contrast and the one at 1.5 times it does not (where the frame can show
-// it): every half decade at 100 px/deg, every decade at 140 px/deg.
+// it): every half decade from 1e-3 to 1 cd/m^2 at 100 px/deg, and from 1e-3
+// to 10 cd/m^2 at 140 px/deg.
 TEST(AcuityCalibration, TheResolutionLimitFollowsHumanAcuityFromStarlightToTwilight) {
   const std::pair<double, std::vector<double>> cases[2] = {{100.0, {-3.0, -2.5, -2.0, -1.5, -1.0, -0.5, 0.0}},
-                                                           {140.0, {-3.0, -2.0, -1.0, 0.0}}};
+                                                           {140.0, {-3.0, -2.0, -1.0, 0.0, 0.5, 1.0}}};
   for (const auto& [ppd, levels] : cases) {
     const AcuityLoss loss(AcuityParams{}, ppd, 3);
     for (double log_l : levels) {

@@ -43,7 +43,6 @@ double added_blur_deg(double ppd, double fps, const std::string& preset) {
   Settings s;
   apply_quality_preset(preset, s);
   s.glare = false;  // the line's own width, not the eye's PSF
-  s.surround_mode = "fixed";
   s.surround_cd_m2 = 0.01;
   const int w = int(std::lround(3.0 * ppd)), h = 24;
   s.geometry.fov_deg = w / ppd;

@@ -101,7 +101,7 @@ TEST_F(BadInput, ACommandLineErrorIsOneErrorLine) {
 TEST_F(BadInput, GazeOutsideTheFrameSeesTheSurround) {
   std::ofstream(dir_ / "gaze.csv") << "t,x,y\n0,-500,6\n";
   const auto r = test::run_eyestream("run -i " + (dir_ / "f_%d.exr") + " -g " + (dir_ / "gaze.csv") + " -o " +
-                                     (dir_ / "out.mp4") + " --surround-mode fixed --surround 0.01 --report " + (dir_ / "r.csv"));
+                                     (dir_ / "out.mp4") + " --surround 0.01 --report " + (dir_ / "r.csv"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   std::ifstream csv(dir_ / "r.csv");
   std::string header, row;

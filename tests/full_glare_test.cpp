@@ -44,6 +44,22 @@ TEST(FullGlare, AUniformFieldAndSurroundStayUniformToTheCorners) {
     }
 }
 
+// Skipping: a neutral uniform field equal to its surround comes back as it
+// is; a coloured one does not (the grey surround scatters into its edges).
+TEST(FullGlare, OnlyANeutralUniformFieldEqualToItsSurroundIsSkipped) {
+  Settings s;
+  GlareStage stage(test::plan_for(s, kW, kH));
+  bool ran = true;
+  const cv::Mat grey = test::constant_frame(kW, kH, {50, 50, 50});
+  const cv::Mat same = stage.apply(grey, 1.0, 50.0, 3.0, &ran);
+  EXPECT_FALSE(ran);
+  EXPECT_EQ(same.data, grey.data);
+  const cv::Mat red = test::constant_frame(kW, kH, {200, 0, 0});
+  const cv::Mat glared = stage.apply(red, 1.0, 0.2126 * 200, 3.0, &ran);
+  EXPECT_TRUE(ran);
+  EXPECT_GT(glared.at<cv::Vec3f>(0, 0)[1], 1.0f) << "green scattered in from the grey surround at the corner";
+}
+
 // A lamp of 90 cd/m^2 (below the 100 cd/m^2 display peak) veils its
 // surroundings, and the display peak changes nothing.
 TEST(FullGlare, ByDefaultEveryLampVeilsWhateverTheDisplayPeak) {

@@ -34,6 +34,18 @@ TEST(LuminanceField, PatchAveragesLuminancesNotLogs) {
   EXPECT_NEAR(field.patch_log_mean(1, 1, 1.0, 1.0), std::log10(500.5), 1e-6);
 }
 
+TEST(EdgeLogMean, TheGeometricMeanOfTheOuterBandAndNothingInside) {
+  cv::Mat frame = test::constant_frame(40, 30, {10, 10, 10});
+  frame(cv::Rect(4, 4, 32, 22)).setTo(cv::Scalar::all(1e6));  // inside the 4 px band: ignored
+  EXPECT_NEAR(edge_log_mean(frame, 4, 1e-6), 10.0, 1e-9);
+  // Half the band at 1000, half at 10... by area: left and right columns.
+  cv::Mat halves = test::constant_frame(40, 30, {10, 10, 10});
+  halves.colRange(0, 20).setTo(cv::Scalar::all(1000));
+  EXPECT_NEAR(edge_log_mean(halves, 4, 1e-6), 100.0, 1e-6) << "geometric: one bright side does not dominate";
+  // A band as wide as the frame is the whole frame.
+  EXPECT_NEAR(edge_log_mean(test::constant_frame(6, 6, {2, 2, 2}), 4, 1e-6), 2.0, 1e-9);
+}
+
 TEST(LuminanceField, BlackAndNonFinitePixelsCountAsTheFloor) {
   cv::Mat frame = test::constant_frame(2, 2, {0, 0, 0});
   frame.at<cv::Vec3f>(0, 1) = cv::Vec3f(INFINITY, 0, 0);

@@ -30,7 +30,6 @@ Afterimage flash_afterimage(double ppd, const std::string& preset, double diamet
   Settings s;
   apply_quality_preset(preset, s);
   s.glare = glare;
-  s.surround_mode = "fixed";
   s.surround_cd_m2 = 0.01;
   const int w = int(std::lround(4.0 * ppd)), h = int(std::lround(3.0 * ppd));
   s.geometry.fov_deg = w / ppd;

@@ -145,13 +145,13 @@ TEST(StageSkipping, MovingGazeOverAStillSceneKeepsTheRetinaRunning) {
 
 TEST(StageSkipping, PhotopicFramesSkipMesopicWorkAndDarkOnesDoNot) {
   const std::vector<Gaze> gaze(10, Gaze(48, 27));
-  const Watch bright = watch(std::vector<cv::Mat>(10, still_scene(500.0f)), gaze, true);
+  const Watch bright = watch(std::vector<cv::Mat>(10, still_scene(50.0f)), gaze, true);
   const Watch dark = watch(std::vector<cv::Mat>(10, still_scene(0.05f)), gaze, true);
   EXPECT_FALSE(bright.reports.back().active.mesopic);
   EXPECT_FALSE(bright.reports.back().active.acuity);
   EXPECT_TRUE(dark.reports.back().active.mesopic);
   EXPECT_TRUE(dark.reports.back().active.acuity);
-  const Watch forced = watch(std::vector<cv::Mat>(10, still_scene(500.0f)), gaze, false);
+  const Watch forced = watch(std::vector<cv::Mat>(10, still_scene(50.0f)), gaze, false);
   EXPECT_TRUE(forced.reports.back().active.acuity) << "--no-skip runs the acuity stage";
 }
 
