@@ -8,12 +8,14 @@
 
 namespace eyestream::io {
 
-void write_png(const std::filesystem::path& path, const cv::Mat& bgr) {
+StagedFile stage_png(const std::filesystem::path& path, const cv::Mat& bgr) {
   std::vector<unsigned char> png;
   if (!cv::imencode(".png", bgr, png)) throw OutputError(path.string() + ": PNG encoding failed");
   StagedFile file(path);
   write_all(file, png);
-  file.commit();
+  return file;
 }
+
+void write_png(const std::filesystem::path& path, const cv::Mat& bgr) { stage_png(path, bgr).commit(); }
 
 }  // namespace eyestream::io

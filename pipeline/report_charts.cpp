@@ -153,6 +153,10 @@ std::vector<ReportSeries> parse_report(const std::string& csv_text, const std::s
 }
 
 void write_report_charts(const std::vector<ReportSeries>& series, const std::string& png_path) {
+  stage_report_charts(series, png_path).commit();
+}
+
+io::StagedFile stage_report_charts(const std::vector<ReportSeries>& series, const std::string& png_path) {
   std::vector<Chart> charts = {{"adaptation luminance (cd/m^2)", true, {}},
                                {"pupil diameter (mm)", false, {}},
                                {"veiling luminance at the gaze (cd/m^2)", true, {}},
@@ -205,7 +209,7 @@ void write_report_charts(const std::vector<ReportSeries>& series, const std::str
   char axis[64];
   std::snprintf(axis, sizeof(axis), "time (s), %.2f to %.2f", t0, t1);
   text(img, axis, {kWidth / 2 - 80, top + strip + 14}, 0.5);
-  io::write_png(png_path, img);
+  return io::stage_png(png_path, img);
 }
 
 void draw_report_file(const std::string& csv_path, const std::string& png_path) {

@@ -4,6 +4,7 @@
 // blinks shaded and the frames where the glare stage ran marked.
 #pragma once
 
+#include "io/staged_file.hpp"
 #include <string>
 #include <vector>
 
@@ -26,5 +27,7 @@ void draw_report_file(const std::string& csv_path, const std::string& png_path);
 
 // Draws the charts to a PNG (staged, then renamed).
 void write_report_charts(const std::vector<ReportSeries>& series, const std::string& png_path);
+// The same, left under its temporary name for the caller to commit.
+io::StagedFile stage_report_charts(const std::vector<ReportSeries>& series, const std::string& png_path);
 
 }  // namespace eyestream::pipeline

@@ -25,10 +25,10 @@ std::string number(double v) {
 // A value, or an empty field when it is unknown.
 std::string field(bool known, double v) { return known ? number(v) : ""; }
 
-void write_text(const std::string& path, const std::string& text) {
+io::StagedFile stage_text(const std::string& path, const std::string& text) {
   io::StagedFile file(path);
   io::write_all(file, std::vector<unsigned char>(text.begin(), text.end()));
-  file.commit();
+  return file;
 }
 
 }  // namespace
@@ -74,6 +74,10 @@ void ReportWriter::add(std::int64_t frame, double time_s, size_t viewer, const F
 }
 
 void ReportWriter::finish() {
+  for (io::StagedFile& f : stage()) f.commit();
+}
+
+std::vector<io::StagedFile> ReportWriter::stage() const {
   nlohmann::json viewers = nlohmann::json::array();
   for (size_t i = 0; i < viewers_.size(); ++i) {
     const Summary& s = summary_[i];
@@ -94,9 +98,12 @@ void ReportWriter::finish() {
   }
   const std::int64_t frames = summary_.empty() ? 0 : summary_[0].frames;
   const nlohmann::json summary = {{"frames", frames}, {"viewers", viewers}};
-  write_text(path_, rows_);
-  write_text(std::filesystem::path(path_).replace_extension(".json").string(), summary.dump(2) + "\n");
-  write_report_charts(parse_report(rows_, path_), std::filesystem::path(path_).replace_extension(".png").string());
+  std::vector<io::StagedFile> files;
+  files.push_back(stage_text(path_, rows_));
+  files.push_back(stage_text(std::filesystem::path(path_).replace_extension(".json").string(), summary.dump(2) + "\n"));
+  files.push_back(
+      stage_report_charts(parse_report(rows_, path_), std::filesystem::path(path_).replace_extension(".png").string()));
+  return files;
 }
 
 nlohmann::json ReportWriter::save() const {

@@ -3,6 +3,7 @@
 // end of the run.
 #pragma once
 
+#include "io/staged_file.hpp"
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -40,6 +41,9 @@ class ReportWriter {
   void add(std::int64_t frame, double time_s, size_t viewer, const FrameReport& r);
   // Writes FILE.csv, FILE.json and FILE.png.
   void finish();
+  // The same files written under temporary names, for the caller to commit
+  // with the run's other outputs.
+  std::vector<io::StagedFile> stage() const;
   // Checkpoints: the rows and summaries so far, and back.
   nlohmann::json save() const;
   void restore(const nlohmann::json& saved);

@@ -164,7 +164,9 @@ void RetinaStage::restore(const std::vector<cv::Mat>& mats, bool started) {
   started_ = started;
 }
 
-void RetinaStage::write_state(const std::string& path) const {
+void RetinaStage::write_state(const std::string& path) const { stage_state(path).commit(); }
+
+io::StagedFile RetinaStage::stage_state(const std::string& path) const {
   std::vector<cv::Mat> b, c;
   cv::Mat b32, c32;
   state_.bleached().convertTo(b32, CV_32FC3);
@@ -174,7 +176,7 @@ void RetinaStage::write_state(const std::string& path) const {
   io::StagedFile file(path);
   io::write_exr_channels(file.temp_path().string(),
                          {{"B.L", b[0]}, {"B.M", b[1]}, {"B.S", b[2]}, {"C.L", c[0]}, {"C.M", c[1]}, {"C.S", c[2]}});
-  file.commit();
+  return file;
 }
 
 }  // namespace eyestream::pipeline

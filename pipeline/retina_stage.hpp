@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "io/staged_file.hpp"
 #include "pipeline/gaze_timeline.hpp"
 #include "pipeline/plan.hpp"
 #include "retina/retina_state.hpp"
@@ -45,6 +46,8 @@ class RetinaStage {
   // Writes B and C per cone (channels B.L, B.M, B.S, C.L, C.M, C.S) of the
   // grid as a float EXR.
   void write_state(const std::string& path) const;
+  // The same, left under its temporary name for the caller to commit.
+  io::StagedFile stage_state(const std::string& path) const;
 
   const retina::RetinaState& state() const { return state_; }
   // Checkpoints: the state's matrices, the resting bookkeeping, and

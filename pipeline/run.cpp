@@ -6,10 +6,13 @@
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <opencv2/core.hpp>
 #include <sstream>
 
 #include "io/error.hpp"
+#include "io/staged_file.hpp"
+#include "pipeline/output_paths.hpp"
 #include "io/source_factory.hpp"
 #include "io/staged_file.hpp"
 #include "io/gaze_import.hpp"
@@ -124,6 +127,7 @@ RunSummary run(const Settings& s) {
   std::vector<io::GazeSample> samples;
   if (!s.gaze.empty()) samples = io::read_gaze(s.gaze, gaze_import_options(s, info));
   const TargetRegion target(s.target_rect, s.target_mask, cv::Size(info.width, info.height));
+  check_outputs(run_outputs(s));  // before anything is written
   io::SinkOptions sink_options = s.sink;
   sink_options.video.frames_per_second = info.frames_per_second;
   std::unique_ptr<io::FrameSink> sink = io::make_sink(s.output, sink_options);
@@ -137,6 +141,7 @@ RunSummary run(const Settings& s) {
   const std::int64_t resume_from = prepare_checkpoints(s, settings, *sink, renderer, report.get());
   const char* kill_at = std::getenv("EYESTREAM_TEST_KILL_AT_FRAME");  // crash injection for the resume test
 
+  std::optional<io::StagedFile> state_file;  // committed with the other outputs
   RunSummary summary;
   summary.output = s.output;
   Progress progress(info.frame_count, s.progress);
@@ -159,7 +164,8 @@ RunSummary run(const Settings& s) {
     if (written) sink->write(shown);
     for (size_t i = 0, v = 0; written && report && i < renderer.panels(); ++i)
       if (renderer.spec(i).viewer) report->add(current->index, current->time_s, v++, renderer.report(i));
-    if (!s.state_exr.empty() && current->index == s.state_frame) renderer.eye(main).retina().write_state(s.state_exr);
+    if (!s.state_exr.empty() && current->index == s.state_frame)
+      state_file.emplace(renderer.eye(main).retina().stage_state(s.state_exr));
     if (written && next && s.checkpoint_every > 0 && (current->index + 1 - s.start_frame) % s.checkpoint_every == 0) {
       sink->commit_so_far();  // the frames so far must outlive a crash
       write_checkpoint(s.checkpoint, {identity, settings, current->index + 1, report ? report->save() : nlohmann::json(),
@@ -176,8 +182,13 @@ RunSummary run(const Settings& s) {
     throw InputError(s.input + (s.start_frame > 0 ? ": no frame at or after --start-frame " +
                                                        std::to_string(s.start_frame)
                                                  : std::string(": no frame could be read")));
+  // Every output is complete under its temporary name before any is
+  // renamed into place: a failure leaves none of them.
+  std::vector<io::StagedFile> staged;
+  if (report) staged = report->stage();
   sink->finish();
-  if (report) report->finish();
+  for (io::StagedFile& f : staged) f.commit();
+  if (state_file) state_file->commit();
   progress.finish();
   summary.wall_s = progress.elapsed_s();
   summary.final_adaptation_log = renderer.eye(main).adaptation_log();
