@@ -4,6 +4,7 @@
 
 #include <Imath/half.h>
 #include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/openexr.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
@@ -36,10 +37,33 @@ std::string channel_layout(const Imf::ChannelList& ch) {
   return "";
 }
 
+// The data window from the header alone (OpenEXR's core library reads no
+// more than the header), refused over max_pixels before the C++ library
+// builds its tables for it.
+void check_data_window(const std::string& path, std::int64_t max_pixels) {
+  exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+  init.error_handler_fn = [](exr_const_context_t, exr_result_t, const char*) {};  // reported below, once
+  exr_context_t ctxt = nullptr;
+  if (exr_start_read(&ctxt, path.c_str(), &init) != EXR_ERR_SUCCESS) {
+    exr_finish(&ctxt);
+    return;  // not readable as EXR: the C++ reader says why
+  }
+  exr_attr_box2i_t dw;
+  const bool ok = exr_get_data_window(ctxt, 0, &dw) == EXR_ERR_SUCCESS;
+  exr_finish(&ctxt);
+  if (!ok) return;
+  const std::int64_t width = std::int64_t(dw.max.x) - dw.min.x + 1, height = std::int64_t(dw.max.y) - dw.min.y + 1;
+  if (width <= 0 || height <= 0 || width * height > max_pixels)
+    throw InputError(path + ": data window " + std::to_string(width) + "x" + std::to_string(height) +
+                     " (read from its header) exceeds the limit of " + std::to_string(max_pixels) +
+                     " pixels (--max-pixels)");
+}
+
 }  // namespace
 
 ExrImage read_exr(const std::string& path, std::int64_t max_pixels) {
   try {
+    check_data_window(path, max_pixels);
     Imf::InputFile file(path.c_str());
     const Imf::Header& header = file.header();
     const Imath::Box2i dw = header.dataWindow();

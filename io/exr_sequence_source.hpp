@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "io/memory_guard.hpp"
 #include "io/frame_sequence.hpp"
 #include "io/frame_source.hpp"
 
@@ -16,7 +17,7 @@ struct ExrSequenceOptions {
   std::optional<double> frames_per_second;  // overrides framesPerSecond
   double default_frames_per_second = 30.0;  // when neither says
   bool skip_missing = false;
-  std::int64_t max_pixels = 400'000'000;
+  std::int64_t max_pixels = default_max_pixels();  // memory_guard.hpp
 };
 
 // Decodes each frame to linear Rec.709 in cd/m^2: pixel * scale, where scale

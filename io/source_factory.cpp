@@ -15,6 +15,9 @@ std::unique_ptr<FrameSource> open_source(const std::string& input, const SourceO
     RawStreamOptions raw;
     if (o.raw_size.empty()) throw UsageError("-i -: raw frames on standard input need --size WxH");
     parse_frame_size(o.raw_size, raw.width, raw.height);
+    if (std::int64_t(raw.width) * raw.height > o.exr.max_pixels)
+      throw UsageError("--size " + o.raw_size + " exceeds the limit of " + std::to_string(o.exr.max_pixels) +
+                       " pixels (--max-pixels)");
     raw.frames_per_second = o.exr.frames_per_second.value_or(o.exr.default_frames_per_second);
     raw.scale = o.exr.scale.value_or(1.0);
     return std::make_unique<RawStreamSource>(stdin, "standard input", raw);

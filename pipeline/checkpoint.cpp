@@ -82,7 +82,7 @@ std::string first_difference(const std::string& a, const std::string& b) {
 
 std::string run_settings(const Settings& s, const io::SourceInfo& source) {
   Settings copy = s;
-  const std::set<std::string> ignored = {"threads", "progress", "verbose", "print-plan",
+  const std::set<std::string> ignored = {"threads", "progress", "verbose", "print-plan", "max-pixels",
                                          "checkpoint", "checkpoint-every", "resume"};
   std::ostringstream text;
   const ParamSet params = run_parameters(copy);

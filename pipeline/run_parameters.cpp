@@ -14,7 +14,7 @@ ParamSet run_parameters(Settings& s) {
   set.add(number("fps", "1/s", "frame rate; overrides the EXR framesPerSecond attribute (30 when neither says)", in,
                  &s.exr.frames_per_second, 1e-3, 10000));
   set.add(flag("skip-missing", "go on past missing frames of a numbered sequence", in, &s.exr.skip_missing));
-  set.add(number("max-pixels", "pixels", "refuse larger frames, before allocating", in, &s.exr.max_pixels, 1, 4e9));
+  set.add(number("max-pixels", "pixels", "refuse larger frames, before allocating (default: the machine's memory over 400 bytes a pixel)", in, &s.exr.max_pixels, 1, 4e9));
   set.add(choice("on-bad-video", "a video packet that does not decode, or a video that ends early: fail, or stop "
                  "there keeping what was read", in, &s.video_input.on_bad_video, {"fail", "stop"}));
   set.add(text("size", "WxH of raw float RGB frames on standard input (-i -)", in, &s.frame_size));

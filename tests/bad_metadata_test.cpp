@@ -9,6 +9,9 @@
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStandardAttributes.h>
 
+#include <sys/resource.h>
+
+#include <cstring>
 #include <fstream>
 #include <vector>
 
@@ -79,6 +82,31 @@ TEST_F(BadMetadata, ATinyHdrClaimingAHugeImageIsRefusedBeforeDecoding) {
   std::ofstream(dir_ / "h.hdr", std::ios::binary) << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 90000 +X 90000\n"
                                                   << std::string(1000, '\0');
   expect_refused(dir_ / "h.hdr", "h.hdr: 90000x90000 exceeds the limit");
+}
+
+// An EXR of a few hundred bytes whose header claims a data window of 800
+// million pixels is refused from its header, before OpenEXR builds its tables
+// for it: the run's peak memory stays small.
+TEST_F(BadMetadata, AnExrClaimingAHugeDataWindowIsRefusedFromItsHeader) {
+  io::write_exr(dir_ / "big.exr", test::constant_frame(16, 12, {1, 1, 1}), {false, std::nullopt, 30.0});
+  std::string bytes = test::read_bytes(dir_ / "big.exr");
+  const std::string key = std::string("dataWindow") + '\0' + "box2i" + '\0';
+  const size_t at = bytes.find(key);
+  ASSERT_NE(at, std::string::npos);
+  const std::int32_t huge = 49999999;  // ymax: 16 x 50 million pixels
+  std::memcpy(&bytes[at + key.size() + 4 + 12], &huge, 4);
+  std::ofstream(dir_ / "big.exr", std::ios::binary | std::ios::trunc) << bytes;
+  expect_refused(dir_ / "big.exr", "big.exr: data window 16x50000000 (read from its header) exceeds the limit");
+  rusage usage{};
+  getrusage(RUSAGE_CHILDREN, &usage);
+  EXPECT_LT(usage.ru_maxrss, 400 * 1024) << "peak resident memory of the run, KiB";
+}
+
+TEST_F(BadMetadata, RawFramesLargerThanTheGuardAreRefusedBeforeAllocating) {
+  const auto r = test::run_eyestream("run -i - --size 65536x65536 -g " + (dir_ / "gaze.csv") + " -o " +
+                                     (dir_ / "out.mp4") + " < /dev/null");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--size 65536x65536 exceeds the limit"), std::string::npos) << r.output;
 }
 
 }  // namespace
