@@ -1,9 +1,9 @@
-// How much the FFmpeg libraries print on stderr.
+// How much the FFmpeg and OpenCV libraries print on stderr.
 #pragma once
 
 namespace eyestream::io {
 
-// Errors only, or (verbose) the libraries' informational messages too.
+// Nothing, or (verbose) the libraries' informational messages.
 void set_library_verbosity(bool verbose);
 
 }  // namespace eyestream::io

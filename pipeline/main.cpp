@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <string>
 
+#include "io/library_logging.hpp"
 #include "io/error.hpp"
 #include "io/frame_sequence.hpp"
 #include "io/source_factory.hpp"
@@ -177,6 +178,7 @@ int main(int argc, char** argv) {
     return fail(kExitUsage, std::string(e.what()) + " (see --help)");
   }
 
+  io::set_library_verbosity(settings.verbose);  // every command; run sets it again after the config file
   try {
     if (*run_cmd) {
       // The preset first, then the config file and the command line again:
