@@ -21,10 +21,23 @@ SinkNeeds ImageSequenceSink::needs() const {
   return SinkNeeds::kLinear;
 }
 
+namespace {
+
+constexpr const char* kTag = "frame";
+
+}  // namespace
+
+ImageSequenceSink::~ImageSequenceSink() {
+  std::error_code ec;
+  for (const auto& [first, last] : staged_)
+    for (std::int64_t n = first; n <= last; ++n) std::filesystem::remove(staged_temp_path(format_pattern(pattern_, n), kTag), ec);
+}
+
 void ImageSequenceSink::write(const DisplayFrame& frame) {
-  if (written_ + std::int64_t(files_.size()) > 0 && !is_printf_pattern(pattern_))
+  if (written_ + staged_count_ > 0 && !is_printf_pattern(pattern_))
     throw OutputError(pattern_ + ": more than one frame needs a numbered pattern such as out/%05d.png");
-  StagedFile file(format_pattern(pattern_, first_number_ + frame.index));
+  const std::int64_t number = first_number_ + frame.index;
+  StagedFile file(format_pattern(pattern_, number), kTag);
   if (format_ == ImageFormat::kExr) {
     write_exr(file.temp_path().string(), frame.linear, ExrWriteOptions{false, std::nullopt, std::nullopt});
   } else {
@@ -34,18 +47,32 @@ void ImageSequenceSink::write(const DisplayFrame& frame) {
     if (!cv::imencode(".png", bgr, bytes)) throw OutputError(file.final_path().string() + ": PNG encoding failed");
     write_all(file, bytes);
   }
-  files_.push_back(std::move(file));
+  file.release();
+  if (!staged_.empty() && staged_.back().second + 1 == number)
+    staged_.back().second = number;
+  else
+    staged_.push_back({number, number});
+  ++staged_count_;
 }
 
 void ImageSequenceSink::finish() {
-  if (written_ == 0 && files_.empty()) throw OutputError(pattern_ + ": no frame was written");
+  if (written_ == 0 && staged_count_ == 0) throw OutputError(pattern_ + ": no frame was written");
   commit_so_far();
 }
 
 bool ImageSequenceSink::commit_so_far() {
-  for (StagedFile& f : files_) f.commit();
-  written_ += std::int64_t(files_.size());
-  files_.clear();
+  while (!staged_.empty()) {
+    auto& [first, last] = staged_.front();
+    for (; first <= last; ++first) {
+      const std::filesystem::path final_path = format_pattern(pattern_, first);
+      std::error_code ec;
+      std::filesystem::rename(staged_temp_path(final_path, kTag), final_path, ec);
+      if (ec) throw OutputError(final_path.string() + ": cannot move finished output into place: " + ec.message());
+      ++written_;
+      --staged_count_;
+    }
+    staged_.erase(staged_.begin());
+  }
   return true;
 }
 

@@ -23,12 +23,17 @@ class ImageSequenceSink : public FrameSink {
   void write(const DisplayFrame& frame) override;
   void finish() override;
   bool commit_so_far() override;
+  ~ImageSequenceSink() override;
 
  private:
+  // The staged frames, as runs of consecutive frame numbers: memory stays
+  // flat however long the sequence (each temporary is found again from its
+  // final name, io::staged_temp_path).
   std::string pattern_;
   ImageFormat format_;
   std::int64_t first_number_;
-  std::vector<StagedFile> files_;
+  std::vector<std::pair<std::int64_t, std::int64_t>> staged_;  // [first, last] numbers
+  std::int64_t staged_count_ = 0;
   std::int64_t written_ = 0;
 };
 

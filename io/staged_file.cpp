@@ -52,6 +52,15 @@ void check_not_input(const fs::path& path) {
     throw OutputError(path.string() + ": output would overwrite an input file");
 }
 
+fs::path staged_temp_path(const fs::path& final_path, const std::string& tag) {
+  return final_path.parent_path() /
+         ("." + final_path.filename().string() + ".partial-" + std::to_string(::getpid()) + "-" + tag);
+}
+
+StagedFile::StagedFile(fs::path final_path, const std::string& tag) : StagedFile(std::move(final_path)) {
+  temp_ = staged_temp_path(final_, tag);
+}
+
 StagedFile::StagedFile(fs::path final_path) : final_(std::move(final_path)) {
   check_not_input(final_);
   fs::path dir = final_.parent_path();

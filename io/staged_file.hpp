@@ -14,6 +14,10 @@ namespace eyestream::io {
 class StagedFile {
  public:
   explicit StagedFile(std::filesystem::path final_path);
+  // With a temporary name derived from the final one and `tag`
+  // (staged_temp_path), so a caller staging many files can find each
+  // temporary again from its final name without keeping this object.
+  StagedFile(std::filesystem::path final_path, const std::string& tag);
   ~StagedFile();
   StagedFile(const StagedFile&) = delete;
   StagedFile& operator=(const StagedFile&) = delete;
@@ -23,12 +27,17 @@ class StagedFile {
   const std::filesystem::path& temp_path() const { return temp_; }
   const std::filesystem::path& final_path() const { return final_; }
   void commit();
+  // Leaves the temporary file for the caller, which renames or removes it.
+  void release() { done_ = true; }
 
  private:
   std::filesystem::path final_;
   std::filesystem::path temp_;
   bool done_ = false;
 };
+
+// The temporary name of `final_path` staged with `tag` by this process.
+std::filesystem::path staged_temp_path(const std::filesystem::path& final_path, const std::string& tag);
 
 // Removes the temporary files that processes no longer running left in
 // `dir` (a killed run before --resume); returns how many.

@@ -108,17 +108,19 @@ struct VideoReader::Impl {
     return false;
   }
 
+  // Converts the picture just received, frame `decoded - 1`.
   cv::Mat to_rgb() {
+    const std::int64_t index = decoded - 1;
     if (width <= 0 || height <= 0) width = frame->width, height = frame->height;
     if (frame->width != width || frame->height != height)
-      fail("frame " + std::to_string(decoded) + " is " + std::to_string(frame->width) + "x" +
+      fail("frame " + std::to_string(index) + " is " + std::to_string(frame->width) + "x" +
            std::to_string(frame->height) + ", the video began at " + std::to_string(width) + "x" +
            std::to_string(height) + " (a video whose size changes is not supported)");
     const AVPixelFormat src = AVPixelFormat(frame->format);
     sws = sws_getCachedContext(sws, frame->width, frame->height, src, frame->width, frame->height,
                                AV_PIX_FMT_RGB48LE, SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT, nullptr,
                                nullptr, nullptr);
-    if (!sws) fail("frame " + std::to_string(decoded) + ": cannot convert its pixel format");
+    if (!sws) fail("frame " + std::to_string(index) + ": cannot convert its pixel format");
     const int* table = sws_getCoefficients(sws_matrix(frame->colorspace != AVCOL_SPC_UNSPECIFIED
                                                           ? frame->colorspace
                                                           : format->streams[stream]->codecpar->color_space));

@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake ninja-build pkg-config git
+  build-essential cmake ninja-build pkg-config git time
   libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev
   libopenexr-dev
   libavformat-dev libavcodec-dev libavutil-dev libswscale-dev

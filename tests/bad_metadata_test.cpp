@@ -11,6 +11,7 @@
 
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <vector>
@@ -31,7 +32,8 @@ class BadMetadata : public ::testing::Test {
     const auto r = test::run_eyestream("run -i " + input + " -g " + (dir_ / "gaze.csv") + " -o " + (dir_ / "out.mp4"));
     EXPECT_EQ(r.exit_code, 3) << r.output;
     EXPECT_NE(r.output.find(message), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find("eyestream: error: "), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.rfind("eyestream: error: ", 0), 0u) << "one error line, nothing before it: " << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
     EXPECT_FALSE(fs::exists(dir_ / "out.mp4"));
   }
   test::ScratchDir dir_;

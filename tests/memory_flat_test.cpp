@@ -1,0 +1,60 @@
+// Memory does not grow with the length of a run, for every output kind:
+// the peak resident memory of 100 000 frames is within a few MB of that of
+// 1000 (small frames, so the per-frame bookkeeping, not the frame, would
+// show). Not built with AddressSanitizer, whose quarantine keeps freed
+// memory resident by design.
+#include <gtest/gtest.h>
+
+#if !defined(__SANITIZE_ADDRESS__)
+
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+#include "tests/test_support.hpp"
+
+namespace eyestream {
+namespace {
+
+// Peak resident memory (KiB) of one run over `frames` raw 16x16 frames.
+long peak_kib(const test::ScratchDir& dir, long frames, const std::string& output) {
+  const std::string command = "head -c " + std::to_string(16L * 16 * 12 * frames) +
+                              " /dev/zero | /usr/bin/time -f %M -o " + (dir / "rss.txt") + " " EYESTREAM_BINARY +
+                              " run -i - --size 16x16 -g " + (dir / "gaze.csv") + " --no-progress " + output +
+                              " > /dev/null 2> " + (dir / "err.txt");
+  if (std::system(command.c_str()) != 0) return -1;
+  long kib = -1;
+  std::ifstream(dir / "rss.txt") >> kib;
+  return kib;
+}
+
+TEST(MemoryFlat, TheLengthOfARunDoesNotGrowItsMemoryForAnyOutputKind) {
+  test::ScratchDir dir;
+  std::ofstream(dir / "gaze.csv") << "t,x,y\n0,8,8\n";
+  const struct {
+    const char* name;
+    std::string output;
+  } kinds[] = {
+      {"PNG", "-o " + (dir / "png/%06d.png")},
+      {"EXR", "-o " + (dir / "exr/%06d.exr")},
+      {"H.264", "-o " + (dir / "v.mp4")},
+      {"HEVC 10-bit", "-o " + (dir / "v.mkv") + " --bit-depth 10"},
+      {"H.264 on standard output", "-o - --format mp4"},
+  };
+  for (const auto& kind : kinds) {
+    const long short_run = peak_kib(dir, 1000, kind.output);
+    std::filesystem::remove_all(dir / "png"), std::filesystem::remove_all(dir / "exr");
+    const long long_run = peak_kib(dir, 100000, kind.output);
+    std::filesystem::remove_all(dir / "png"), std::filesystem::remove_all(dir / "exr");
+    ASSERT_GT(short_run, 0) << kind.name << ": " << test::read_bytes(dir / "err.txt");
+    ASSERT_GT(long_run, 0) << kind.name << ": " << test::read_bytes(dir / "err.txt");
+    EXPECT_LT(long_run - short_run, 4 * 1024) << kind.name << ": " << short_run << " KiB after 1000 frames, "
+                                              << long_run << " KiB after 100 000";
+    std::printf("%s: %ld KiB after 1000 frames, %ld KiB after 100 000\n", kind.name, short_run, long_run);
+  }
+}
+
+}  // namespace
+}  // namespace eyestream
+
+#endif
