@@ -19,12 +19,7 @@ MesopicStage::MesopicStage(const Plan& plan) : plan_(plan) {
 cv::Mat MesopicStage::acuity_level(const cv::Mat& rgb, double adaptation_log, double time_s, double gaze_x,
                                    double gaze_y) const {
   // log10 of the local luminance, low-passed at the coarsest band.
-  cv::Mat luminance(rgb.size(), CV_32F);
-  rgb.forEach<cv::Vec3f>([&](const cv::Vec3f& p, const int* pos) {
-    const float l = retina::photopic_luminance(p);
-    luminance.at<float>(pos[0], pos[1]) =
-        std::isfinite(l) ? std::max(l, float(plan_.dark_cd_m2)) : float(plan_.dark_cd_m2);
-  });
+  cv::Mat luminance = retina::floored_luminance(rgb, plan_.dark_cd_m2);
   const double sigma = acuity_->sigmas_px().back();
   retina::acuity_blur(luminance, luminance, sigma, plan_.mesopic.acuity_params.pyramid_from_px);
   const retina::MesopicParams& m = plan_.mesopic.colour;

@@ -12,4 +12,8 @@ inline float photopic_luminance(const cv::Vec3f& rgb) {
   return kPhotopicR * rgb[0] + kPhotopicG * rgb[1] + kPhotopicB * rgb[2];
 }
 
+// The photopic luminance of each pixel of `rgb` (CV_32FC3) as CV_32F, with
+// luminance below floor_cd_m2, and non-finite luminance, set to the floor.
+cv::Mat floored_luminance(const cv::Mat& rgb, double floor_cd_m2);
+
 }  // namespace eyestream::retina

@@ -9,19 +9,7 @@
 namespace eyestream::retina {
 
 LuminanceField::LuminanceField(const cv::Mat& rgb, double floor_cd_m2) {
-  CV_Assert(rgb.type() == CV_32FC3);
-  cv::Mat l(rgb.size(), CV_32F);
-  const float floor = float(floor_cd_m2);
-  cv::parallel_for_(cv::Range(0, rgb.rows), [&](const cv::Range& rows) {
-    for (int y = rows.start; y < rows.end; ++y) {
-      const cv::Vec3f* in = rgb.ptr<cv::Vec3f>(y);
-      float* out = l.ptr<float>(y);
-      for (int x = 0; x < rgb.cols; ++x) {
-        const float v = photopic_luminance(in[x]);
-        out[x] = (v > floor && std::isfinite(v)) ? v : floor;
-      }
-    }
-  });
+  const cv::Mat l = floored_luminance(rgb, floor_cd_m2);
   cv::integral(l, integral_, CV_64F);
 }
 

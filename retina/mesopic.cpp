@@ -27,19 +27,7 @@ bool mesopic_colour(double adaptation_log, const MesopicParams& p, MesopicColour
 
 void local_rho(const cv::Mat& rgb, double adaptation_log, double sigma_px, double floor_cd_m2, const MesopicParams& p,
                cv::Mat& rho) {
-  CV_Assert(rgb.type() == CV_32FC3);
-  cv::Mat l(rgb.size(), CV_32F);
-  const float floor = float(floor_cd_m2);
-  cv::parallel_for_(cv::Range(0, rgb.rows), [&](const cv::Range& rows) {
-    for (int y = rows.start; y < rows.end; ++y) {
-      const cv::Vec3f* in = rgb.ptr<cv::Vec3f>(y);
-      float* o = l.ptr<float>(y);
-      for (int x = 0; x < rgb.cols; ++x) {
-        const float v = photopic_luminance(in[x]);
-        o[x] = v > floor && std::isfinite(v) ? v : floor;
-      }
-    }
-  });
+  cv::Mat l = floored_luminance(rgb, floor_cd_m2);
   if (sigma_px > 0.0) cv::GaussianBlur(l, l, cv::Size(0, 0), sigma_px, sigma_px, cv::BORDER_REPLICATE);
   rho.create(rgb.size(), CV_32F);
   const float a = float(adaptation_log), bottom = float(p.bottom_log), span = float(p.top_log - p.bottom_log);
