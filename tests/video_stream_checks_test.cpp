@@ -1,4 +1,5 @@
-// A video whose picture size changes mid-stream (a new sequence header) is
+// Videos that do not hold what they claim. A video whose picture size
+// changes mid-stream (a new sequence header) is
 // refused naming the frame, exit 3, not an internal error. The fixture is
 // made here with libavcodec: a raw H.264 stream of five 32x24 frames, then
 // five 48x32 ones.
@@ -11,6 +12,8 @@ extern "C" {
 
 #include <algorithm>
 #include <cstring>
+#include <cstdint>
+#include <filesystem>
 #include <fstream>
 
 #include "tests/test_support.hpp"
@@ -69,7 +72,7 @@ bool write_two_size_stream(const std::string& path) {
   return ok;
 }
 
-TEST(VideoSizeChange, AVideoWhoseSizeChangesIsRefusedNamingTheFrame) {
+TEST(VideoStreamChecks, AVideoWhoseSizeChangesIsRefusedNamingTheFrame) {
   test::ScratchDir dir;
   ASSERT_TRUE(write_two_size_stream(dir / "two.h264"));
   std::ofstream(dir / "gaze.csv") << "t,x,y\n0,16,12\n";
@@ -79,6 +82,42 @@ TEST(VideoSizeChange, AVideoWhoseSizeChangesIsRefusedNamingTheFrame) {
   EXPECT_NE(r.output.find("two.h264: frame 5 is 48x32, the video began at 32x24"), std::string::npos) << r.output;
   EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
   EXPECT_FALSE(std::filesystem::exists(dir / "out.mp4"));
+}
+
+// An MKV whose container duration claims one frame more than it holds
+// (its Segment Info Duration patched): said in a warning, not refused;
+// two frames more: refused, as before.
+TEST(VideoStreamChecks, AnMkvShortOfItsDurationIsSaidOrRefused) {
+  test::ScratchDir dir;
+  ASSERT_EQ(test::run_eyestream("sample flash -o " + (dir / "s") + " --width 64 --height 48 --duration 0.3").exit_code, 0);
+  ASSERT_EQ(test::run_eyestream("run -i " + (dir / "s/frames") + " -o " + (dir / "v.mkv") + " --bit-depth 10").exit_code, 0);
+  const std::string bytes = test::read_bytes(dir / "v.mkv");
+  const std::string id = "\x44\x89\x88";  // Duration, an 8-byte float in timecode units (1 ms)
+  const size_t at = bytes.find(id);
+  ASSERT_NE(at, std::string::npos);
+  const auto with_extra = [&](double frames) {
+    unsigned char be[8];
+    std::memcpy(be, bytes.data() + at + 3, 8);
+    std::uint64_t bits = 0;
+    for (unsigned char b : be) bits = (bits << 8) | b;
+    double ms;
+    std::memcpy(&ms, &bits, 8);
+    ms += frames * 1000.0 / 30.0;
+    std::memcpy(&bits, &ms, 8);
+    std::string patched = bytes;
+    for (int i = 7; i >= 0; --i, bits >>= 8) patched[at + 3 + size_t(i)] = char(bits & 0xff);
+    std::ofstream(dir / "p.mkv", std::ios::binary | std::ios::trunc) << patched;
+    std::filesystem::remove(dir / "out.mp4");
+    return test::run_eyestream("run -i " + (dir / "p.mkv") + " -o " + (dir / "out.mp4") +
+                               " --video-transfer sdr --video-peak 100");
+  };
+  auto r = with_extra(1.0);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("eyestream: warning: " + (dir / "p.mkv") + ": the last frame ends at"), std::string::npos)
+      << r.output;
+  r = with_extra(2.0);
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_NE(r.output.find("p.mkv: ends after 9 frames"), std::string::npos) << r.output;
 }
 
 }  // namespace
