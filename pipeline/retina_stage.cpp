@@ -151,6 +151,9 @@ std::string RetinaStage::memory_error(const std::vector<cv::Mat>& mats) const {
   }
   const cv::Mat& book = mats[5];
   if (book.total() != 3 || book.type() != CV_64F || !cv::checkRange(book)) return "the resting bookkeeping is malformed";
+  const double pending_s = book.at<double>(1), resting = book.at<double>(2);
+  if (!(pending_s >= 0.0 && pending_s <= 1e9) || (resting != 0.0 && resting != 1.0))
+    return "the resting bookkeeping is out of range";
   return "";
 }
 

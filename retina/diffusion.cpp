@@ -1,5 +1,6 @@
 #include "retina/diffusion.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
@@ -7,6 +8,9 @@ namespace eyestream::retina {
 
 void diffuse(cv::Mat& m, double variance) {
   if (!(variance > 0.0)) return;
+  // Beyond the grid's own size a blur is as good as uniform: capped there,
+  // so even an absurd time step stays a finite kernel.
+  variance = std::min(variance, double(m.rows) * m.rows + double(m.cols) * m.cols);
   if (variance > 4.0) {
     const double sigma = std::sqrt(variance);
     cv::GaussianBlur(m, m, cv::Size(0, 0), sigma, sigma, cv::BORDER_REPLICATE);

@@ -14,7 +14,8 @@ namespace eyestream::retina {
 // Adds `variance_sites2` to the spatial variance of `m` along each axis
 // (replicated borders). Up to 4 sites^2 by passes of the three-tap kernel
 // (each at most 0.5); beyond, by a Gaussian of sigma = sqrt(variance), whose
-// sampled variance is within 0.1 % of sigma^2 there.
+// sampled variance is within 0.1 % of sigma^2 there. A variance beyond the
+// grid's squared diagonal is taken as that (the blur is uniform by then).
 void diffuse(cv::Mat& m, double variance_sites2);
 
 }  // namespace eyestream::retina

@@ -25,6 +25,16 @@ double column_variance(const cv::Mat& m) {
   return second;
 }
 
+TEST(Diffusion, AnAbsurdVarianceIsAUniformBlurNotAnError) {
+  cv::Mat m(9, 11, CV_32F, cv::Scalar(0));
+  m.at<float>(4, 5) = 99.0f;
+  retina::diffuse(m, 1e300);
+  double lo, hi;
+  cv::minMaxLoc(m, &lo, &hi);
+  EXPECT_TRUE(cv::checkRange(m)) << "finite";
+  EXPECT_LT(hi - lo, 0.1 * 99.0) << "nearly uniform";
+}
+
 TEST(Diffusion, VariancesAddExactlyHoweverTheTimeIsSplit) {
   cv::Mat line(9, 101, CV_64F, cv::Scalar(0));
   line.col(50).setTo(1.0);

@@ -118,6 +118,16 @@ TEST(Checkpoint, CorruptAndMalformedCheckpointsAreRefusedNamingWhatIsWrong) {
   r = resume_with(absurd);
   EXPECT_EQ(r.exit_code, 3) << r.output;
   EXPECT_NE(r.output.find("s.ckp: not a valid checkpoint (1000000000000 matrices)"), std::string::npos) << r.output;
+  // Time skipped at rest of 1e300 s (found by the checkpoint fuzz target:
+  // its catch-up blur overflowed OpenCV's kernel size).
+  std::string forever = good;
+  const size_t last = forever.size() - 24;  // the bookkeeping's three doubles end the file
+  const double absurd_dt = 1e300;
+  std::memcpy(&forever[last + 8], &absurd_dt, 8);
+  put_u64_at(forever, magic, fnv1a(forever, magic + 8));
+  r = resume_with(forever);
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_NE(r.output.find("the resting bookkeeping is out of range"), std::string::npos) << r.output;
   // The good one still resumes.
   r = resume_with(good);
   EXPECT_EQ(r.exit_code, 0) << r.output;
