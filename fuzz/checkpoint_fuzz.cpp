@@ -17,6 +17,11 @@
 using namespace eyestream;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  static const bool one_thread = [] {
+    cv::setNumThreads(0);  // the same coverage on every run (scripts/fuzz.sh ci)
+    return true;
+  }();
+  (void)one_thread;
   static const pipeline::Plan plan = [] {
     io::SourceInfo info;
     info.width = 32;
