@@ -1,7 +1,10 @@
 // Memory does not grow with the length of a run, for every output kind:
-// the peak resident memory of 100 000 frames is within a few MB of that of
-// 1000 (small frames, so the per-frame bookkeeping, not the frame, would
-// show). Not built with AddressSanitizer, whose quarantine keeps freed
+// the peak resident memory of 100 000 frames is within 8 MiB of that of
+// 1000 (small frames, so per-frame bookkeeping, not the frame, would show:
+// the image sinks' old list of staged files grew 39 MB). An MP4 file's
+// sample tables stay in memory until its index is written at the end
+// (libavformat's mov muxer), some 20-40 bytes a frame: 1.7 to 4.0 MiB here
+// over 100 000 frames. Not built with AddressSanitizer, whose quarantine keeps freed
 // memory resident by design.
 #include <gtest/gtest.h>
 
@@ -48,7 +51,7 @@ TEST(MemoryFlat, TheLengthOfARunDoesNotGrowItsMemoryForAnyOutputKind) {
     std::filesystem::remove_all(dir / "png"), std::filesystem::remove_all(dir / "exr");
     ASSERT_GT(short_run, 0) << kind.name << ": " << test::read_bytes(dir / "err.txt");
     ASSERT_GT(long_run, 0) << kind.name << ": " << test::read_bytes(dir / "err.txt");
-    EXPECT_LT(long_run - short_run, 4 * 1024) << kind.name << ": " << short_run << " KiB after 1000 frames, "
+    EXPECT_LT(long_run - short_run, 8 * 1024) << kind.name << ": " << short_run << " KiB after 1000 frames, "
                                               << long_run << " KiB after 100 000";
     std::printf("%s: %ld KiB after 1000 frames, %ld KiB after 100 000\n", kind.name, short_run, long_run);
   }
