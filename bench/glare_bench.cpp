@@ -1,6 +1,6 @@
 // Glare cost per frame by engine (Google Benchmark; never asserts): the
 // exact FFT engine (Vos and CIE PSFs), the split engine (tail at 1/2 and
-// 1/4 resolution) and seed 003's Gaussian, on a frame with lights above the
+// 1/4 resolution) and Yoshida et al. 2008's Gaussian, on a frame with lights above the
 // display peak, plus the one-time kernel build with and without flare lines.
 #include <benchmark/benchmark.h>
 

@@ -13,7 +13,7 @@
 namespace eyestream::glare {
 
 enum class PsfModel {
-  vos,  // seed 000: f0..f3, blended by adaptation, age term of eq. 10
+  vos,  // Spencer et al. 1995: f0..f3, blended by adaptation, age term of eq. 10
   cie   // CIE 146:2002 general equation for the scattered part; Vos's core and halo
 };
 

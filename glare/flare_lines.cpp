@@ -39,7 +39,7 @@ FlareLineSet flare_lines(const ViewerProfile& viewer, FlareKind kind) {
   const double sector = M_PI / pairs;  // pairs span half the circle; partners fill the other half
   for (int i = 0; i < pairs; ++i) {
     FlareLine line;
-    line.angle_rad = sector * (i + 0.5 * rng.uniform());  // seed 002: jittered within its sector
+    line.angle_rad = sector * (i + 0.5 * rng.uniform());  // the lens flare filter tutorial: jittered within its sector
     line.length_deg = corona ? std::min((rng.uniform() + 0.2) * longest, longest) : longest;
     line.strength = rng.uniform();
     set.lines.push_back(line);

@@ -1,5 +1,5 @@
 // Flare lines: the fine radial streaks of the ciliary corona and of the
-// lenticular halo (seed 000 sec. 3.2; MODEL.md 1.3). A random pattern of
+// lenticular halo (Spencer et al. 1995 sec. 3.2; MODEL.md 1.3). A random pattern of
 // thin radial lines is multiplied into a PSF component and then scaled ring
 // by ring (1 px rings about the centre) so that each ring keeps the energy
 // it had: the streaks add detail without changing the PSF's radial profile
@@ -8,11 +8,11 @@
 // independent sets. The pattern belongs to the viewer's lens: it is a pure
 // function of the viewer's seed, the same on every frame and every run.
 //
-// Line drawing follows seed 002: angles jittered within equal sectors,
+// Line drawing follows the lens flare filter tutorial: angles jittered within equal sectors,
 // lengths (0.2 + u) of the longest, clamped to it, intensity falling as
 // 1 - (t / length)^2 along the line and as (1 - d / width)^2 across it.
 // Lines come in pairs 180 deg apart, as a radial grating gives them
-// (seed 004). Myopic glasses raise their number and length (seed 004; the
+// (Matsuda and Ikedo). Myopic glasses raise their number and length (Matsuda and Ikedo; the
 // factor 1.5 is this project's choice). A brighter source shows more and
 // longer lines by itself: the pattern multiplies the PSF, so the dim ends
 // and the weak lines cross the display's threshold only for bright lights.
@@ -31,7 +31,7 @@ namespace eyestream::glare {
 struct FlareLine {
   double angle_rad = 0;  // in [0, 2 pi)
   double length_deg = 0;
-  double strength = 0;   // in [0, 1] (seed 000: random intensity)
+  double strength = 0;   // in [0, 1] (Spencer et al. 1995: random intensity)
 };
 
 struct FlareLineSet {

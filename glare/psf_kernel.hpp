@@ -1,5 +1,5 @@
 // The eye's PSF on the pixel grid: one kernel per PSF component, each
-// integrated over every pixel's footprint (seed 000 sec. 3.2, seed 003;
+// integrated over every pixel's footprint (Spencer et al. 1995 sec. 3.2, Yoshida et al. 2008;
 // MODEL.md 1.3). The frame's kernel is the weighted sum of the components
 // (psf_weights.hpp), so any weights (age, adaptation regime, pupil) combine
 // without rebuilding anything.
@@ -47,7 +47,7 @@ ComponentKernels build_component_kernels(int frame_width, int frame_height, doub
 // components), CV_64F; it sums to the PSF's energy within the frame's reach.
 cv::Mat combined_kernel(const ComponentKernels& k, const PsfWeights& w, int channel);
 
-// Share of the continuous PSF's energy beyond t_deg (seed 000 states
+// Share of the continuous PSF's energy beyond t_deg (Spencer et al. 1995 states
 // about 0.36 beyond 0.05 deg at age 20, 0.45 at age 60), at 568 nm.
 double energy_beyond(const PsfWeights& w, double t_deg);
 

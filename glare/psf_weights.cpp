@@ -7,9 +7,9 @@ namespace eyestream::glare {
 
 namespace {
 
-constexpr PsfWeights kPhotopic{0.384, 0.478, 0.138, 0.0};    // seed 000 eq. 9
-constexpr PsfWeights kMesopic{0.368, 0.478, 0.138, 0.016};   // seed 000 eq. 9
-constexpr PsfWeights kScotopic{0.282, 0.478, 0.207, 0.033};  // seed 000 eq. 9
+constexpr PsfWeights kPhotopic{0.384, 0.478, 0.138, 0.0};    // Spencer et al. 1995 eq. 9
+constexpr PsfWeights kMesopic{0.368, 0.478, 0.138, 0.016};   // Spencer et al. 1995 eq. 9
+constexpr PsfWeights kScotopic{0.282, 0.478, 0.207, 0.033};  // Spencer et al. 1995 eq. 9
 
 PsfWeights mix(const PsfWeights& a, const PsfWeights& b, double f) {
   return {a.core + f * (b.core - a.core), a.inner + f * (b.inner - a.inner), a.outer + f * (b.outer - a.outer),
@@ -29,7 +29,7 @@ PsfWeights psf_weights(const ViewerProfile& viewer, double a, double pupil_mm) {
   const double halo = w.halo * f * f * (3.0 - 2.0 * f);
   w.core += w.halo - halo;
   w.halo = halo;
-  // Age (seed 000 eq. 10) moves 6.9e-9 A^4 from f0 to f2. At great ages
+  // Age (Spencer et al. 1995 eq. 10) moves 6.9e-9 A^4 from f0 to f2. At great ages
   // that would take more than the core has: the move stops at 90 % of the
   // core (reached near 85 years with photopic weights, 78 with scotopic),
   // so the weights stay valid and nothing is renormalised away from the

@@ -1,5 +1,5 @@
 // The weights of the Vos components f0..f3 for a viewer at an adaptation
-// level (seed 000 eqs. 9-10; MODEL.md 1.1-1.2).
+// level (Spencer et al. 1995 eqs. 9-10; MODEL.md 1.1-1.2).
 #pragma once
 
 #include "glare/viewer.hpp"
@@ -10,7 +10,7 @@ struct PsfWeights {
   double core = 0, inner = 0, outer = 0, halo = 0;  // weights of f0, f1, f2, f3; they sum to 1
 };
 
-// Photopic, mesopic and scotopic weights (seed 000 eq. 9):
+// Photopic, mesopic and scotopic weights (Spencer et al. 1995 eq. 9):
 //   Pp = 0.384 f0 + 0.478 f1 + 0.138 f2
 //   Pm = 0.368 f0 + 0.478 f1 + 0.138 f2 + 0.016 f3
 //   Ps = 0.282 f0 + 0.478 f1 + 0.207 f2 + 0.033 f3
@@ -20,8 +20,8 @@ struct PsfWeights {
 // The halo needs a pupil wider than about 3 mm (the lens fibres sit behind
 // the iris otherwise): its weight is ramped by smoothstep((D - 2.5 mm) /
 // 1 mm), and what it loses goes back to the core. Then the age term moves
-// 6.9e-9 A^4 from f0 to f2 (seed 000 eq. 10; at most 90 % of the core), and
-// haze moves its share of what is left of the core the same way (seed 004:
+// 6.9e-9 A^4 from f0 to f2 (Spencer et al. 1995 eq. 10; at most 90 % of the core), and
+// haze moves its share of what is left of the core the same way (Matsuda and Ikedo:
 // haze adds bloom). The weights are never negative and sum
 // to 1; no component is renormalised.
 PsfWeights psf_weights(const ViewerProfile& viewer, double adaptation_log, double pupil_mm);

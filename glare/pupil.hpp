@@ -5,7 +5,7 @@
 
 namespace eyestream::glare {
 
-// Moon and Spencer (seed 000): D = 4.9 - 3 tanh(0.4 (log10 L + 1)) mm for a
+// Moon and Spencer (Spencer et al. 1995): D = 4.9 - 3 tanh(0.4 (log10 L + 1)) mm for a
 // field luminance of 10^log_l cd/m^2: about 7.9 mm in the dark, 2.9 mm at
 // 10 cd/m^2, 1.9 mm in sunlight.
 double moon_spencer_pupil_mm(double log_l);

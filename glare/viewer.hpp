@@ -9,7 +9,7 @@
 namespace eyestream::glare {
 
 enum class PupilModel {
-  moon_spencer,   // seed 000: luminance only
+  moon_spencer,   // Spencer et al. 1995: luminance only
   watson_yellott  // Watson and Yellott 2012: luminance, field area and age
 };
 
@@ -19,9 +19,9 @@ struct ViewerProfile {
   // 1 light Caucasian, 1.2 very light blue): light through the eye wall.
   // Only the cie PSF model has a term for it.
   double pigmentation = 0.5;
-  bool glasses = false;  // (myopic) glasses: more and longer flare lines (seed 004)
+  bool glasses = false;  // (myopic) glasses: more and longer flare lines (Matsuda and Ikedo)
   // Share of the unscattered core moved into the wide 1/t^2 bloom (f2) by
-  // haze or fog between the light and the eye, 0..0.5 (seed 004).
+  // haze or fog between the light and the eye, 0..0.5 (Matsuda and Ikedo).
   double haze = 0.0;
   PupilModel pupil = PupilModel::moon_spencer;
   double pupil_field_deg = 0.0;  // Watson-Yellott: adapting field diameter; 0: the frame's own field

@@ -4,13 +4,13 @@
 
 namespace eyestream::glare {
 
-double vos_f0(double t) { return 2.61e6 * std::exp(-(t / 0.02) * (t / 0.02)); }  // seed 000 eq. 5
+double vos_f0(double t) { return 2.61e6 * std::exp(-(t / 0.02) * (t / 0.02)); }  // Spencer et al. 1995 eq. 5
 
-double vos_f1(double t) { return 20.91 / std::pow(t + 0.02, 3.0); }  // seed 000 eq. 6
+double vos_f1(double t) { return 20.91 / std::pow(t + 0.02, 3.0); }  // Spencer et al. 1995 eq. 6
 
-double vos_f2(double t) { return 72.37 / std::pow(t + 0.02, 2.0); }  // seed 000 eq. 7
+double vos_f2(double t) { return 72.37 / std::pow(t + 0.02, 2.0); }  // Spencer et al. 1995 eq. 7
 
-double vos_f3(double t, double lambda) {  // seed 000 eq. 8 (Hemenger)
+double vos_f3(double t, double lambda) {  // Spencer et al. 1995 eq. 8 (Hemenger)
   const double d = t - 3.0 * lambda / 568.0;
   return 436.9 * (568.0 / lambda) * std::exp(-19.75 * d * d);
 }

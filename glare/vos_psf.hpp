@@ -1,5 +1,5 @@
 // The eye's point-spread function components of Vos (f0, f1, f2) and the
-// Hemenger lenticular halo (f3), seed 000 eqs. 5-9; MODEL.md 1.1. Each is a
+// Hemenger lenticular halo (f3), Spencer et al. 1995 eqs. 5-9; MODEL.md 1.1. Each is a
 // density over the hemisphere (per steradian) of the angle t in degrees from
 // the source, with unit volume.
 #pragma once

@@ -1,6 +1,6 @@
 // The scene as the viewer sees it at their adaptation level: tone curve with
 // mesopic colour (Purkinje shift, hue shift) and stochastic acuity loss
-// (seed 001 sec. 2.3).
+// (Jacobs et al. 2015 sec. 2.3).
 #pragma once
 
 #include <memory>

@@ -34,11 +34,11 @@ struct MesopicPlan {
 
 struct GlarePlan {
   bool enabled = true;
-  bool gaussian = false;             // seed 003's cheap kernel instead of the eye's PSF
+  bool gaussian = false;             // Yoshida et al. 2008's cheap kernel instead of the eye's PSF
   glare::PsfModel model = glare::PsfModel::vos;
   bool flare_lines = true;
   int tail_factor = 1;               // Vos PSF: 1 exact FFT engine; >= 2 split engine, tail reduced this much
-  double gaussian_sigma_deg = 0.34;  // seed 003
+  double gaussian_sigma_deg = 0.34;  // Yoshida et al. 2008
   bool full = false;
   double display_peak_cd_m2 = 100.0;
   glare::ViewerProfile viewer;

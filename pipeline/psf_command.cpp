@@ -38,7 +38,7 @@ PsfSummary write_psf(const Settings& s, const PsfRequest& r) {
   std::vector<cv::Mat> channels;
   const cv::Point centre(r.width - 1, r.height - 1);
   if (plan.glare.gaussian) {
-    // seed 003's kernel, sigma in degrees, unit sum within the frame's reach.
+    // Yoshida et al. 2008's kernel, sigma in degrees, unit sum within the frame's reach.
     cv::Mat g(2 * r.height - 1, 2 * r.width - 1, CV_32F);
     const double sigma = plan.glare.gaussian_sigma_deg * ppd;
     g.forEach<float>([&](float& v, const int* p) {

@@ -1,6 +1,6 @@
 // The retina stage of the eye simulator: per-cone bleaching and calcium
 // state on a retina-fixed grid, stepped through each frame's gaze segments,
-// and the afterimages it adds to the display (seed 001 sec. 2.2).
+// and the afterimages it adds to the display (Jacobs et al. 2015 sec. 2.2).
 #pragma once
 
 #include <opencv2/core.hpp>
@@ -70,7 +70,7 @@ class RetinaStage {
   // (every afterimage term below kRestTolerance) that keeps receiving the
   // stimulus it was last stepped with, under the same tone curve, is not
   // stepped; the time skipped is stepped in one exact step when the
-  // stimulus changes (the step is exact for a constant stimulus, seed 001
+  // stimulus changes (the step is exact for a constant stimulus, Jacobs et al. 2015
   // eqs. 5 and 9, so one long step equals many short ones).
   void catch_up();
   // The afterimage spread over dt_s seconds, in grid sites^2.

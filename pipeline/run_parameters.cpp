@@ -65,8 +65,8 @@ ParamSet run_parameters(Settings& s) {
   const std::string optics = "Glare (the viewer's optics)";
   set.add(flag("glare", "the eye's point-spread function before the retina", optics, &s.glare));
   set.add(choice("psf-model",
-                 "the eye's PSF: vos (seed 000), cie (CIE 146:2002 scatter with age and pigmentation, Vos core and "
-                 "halo) or the cheap Gaussian of seed 003 (gaussian)",
+                 "the eye's PSF: vos (Spencer et al. 1995), cie (CIE 146:2002 scatter with age and pigmentation, "
+                 "Vos core and halo) or the cheap Gaussian of Yoshida et al. 2008 (gaussian)",
                  optics, &s.psf_model, {"vos", "cie", "gaussian"}));
   set.add(flag("flare-lines", "fine radial streaks in the corona and the halo, fixed per --viewer-seed", optics,
                &s.flare_lines));

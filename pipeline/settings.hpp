@@ -53,7 +53,8 @@ struct Settings {
   // Optics.
   glare::ViewerProfile viewer;
   bool glare = true;
-  std::string psf_model = "vos";      // vos: seed 000's PSF; cie: CIE 146 scatter; gaussian: seed 003's kernel
+  // vos: Spencer et al. 1995's PSF; cie: CIE 146 scatter; gaussian: Yoshida et al. 2008's kernel
+  std::string psf_model = "vos";
   glare::PupilDynamics pupil_dynamics;
   std::string pupil_model = "moon-spencer";  // or watson-yellott (glare/pupil.hpp)
   bool flare_lines = true;            // radial streaks of corona and halo (glare/flare_lines.hpp)
@@ -70,7 +71,8 @@ struct Settings {
   std::string precision = "float";             // state precision: float or double
   double substep_tolerance_deg = 0.05;         // gaze samples closer than this share one state step; 0: every sample
   double afterimage_spread_deg2_per_s = 0.01;  // softening of afterimages: sigma^2 grows at this rate
-  double afterimage_fovea_sigma_deg = 10.0;    // visibility fall-off with eccentricity (seed 001 sec. 2.4); 0: none
+  // Afterimage visibility fall-off with eccentricity (Jacobs et al. 2015 sec. 2.4); 0: none.
+  double afterimage_fovea_sigma_deg = 10.0;
   std::string state_exr;                       // write the state of frame state_frame here
   std::int64_t state_frame = 0;
 

@@ -5,7 +5,7 @@ namespace eyestream::pipeline {
 
 struct ViewingGeometry {
   double fov_deg = 0.0;             // horizontal field of view of the frame; 0: derive from the display
-  double display_diagonal_m = 0.6;  // the frame fills the display (MODEL.md 0, seed 001's condition)
+  double display_diagonal_m = 0.6;  // the frame fills the display (MODEL.md 0, Jacobs et al. 2015's condition)
   double viewing_distance_m = 1.0;
 };
 

@@ -49,7 +49,7 @@ double AcuityLoss::rho_all_kept() const {
 
 cv::Mat AcuityLoss::level(const cv::Mat& rho, double t_s, double gaze_x, double gaze_y) const {
   cv::Mat x = smooth_noise(rho.size(), t_s, noise_, seed_, RandomStream::kAcuity, {gaze_x, gaze_y});
-  // seed 001 eq. 15: rho + g X, the noise fading out above rho = 1.
+  // Jacobs et al. 2015 eq. 15: rho + g X, the noise fading out above rho = 1.
   cv::Mat level(rho.size(), CV_32F);
   const float g = float(params_.noise_gain);
   for (int y = 0; y < rho.rows; ++y) {
@@ -83,7 +83,7 @@ void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
   CV_Assert(image.type() == CV_32FC3 && level.type() == CV_32F && level.size() == image.size());
   // Blur levels L_i (sigma_i), each from the previous with the missing
   // variance; band i = L_(i-1) - L_i. Sum of kept bands plus the residual:
-  // out = L_n + sum_i [level > tau_i] (L_(i-1) - L_i)  (seed 001 eq. 14).
+  // out = L_n + sum_i [level > tau_i] (L_(i-1) - L_i)  (Jacobs et al. 2015 eq. 14).
   std::vector<cv::Mat> blurred(size_t(params_.bands) + 1);
   blurred[0] = image.clone();
   double previous = 0.0;

@@ -1,4 +1,4 @@
-// Stochastic loss of spatial acuity in low light (seed 001 sec. 2.3.3, eqs.
+// Stochastic loss of spatial acuity in low light (Jacobs et al. 2015 sec. 2.3.3, eqs.
 // 14-15; MODEL.md 3).
 #pragma once
 
@@ -11,7 +11,7 @@
 namespace eyestream::retina {
 
 struct AcuityParams {
-  // Band edges sigma_i = sigma0 * 2^i, i = 0..7, in arcminutes. Seed 001
+  // Band edges sigma_i = sigma0 * 2^i, i = 0..7, in arcminutes. Jacobs et al. 2015
   // App. A's extracted "0.75 x 2 i/4" is read as 0.75 * 2^i / 4 pixels of
   // the seed's 64 px/deg display (0.92 arcmin per pixel), octave-spaced like
   // the Laplacian pyramids the seed cites: 0.17 to 22 arcmin, so that deep
@@ -20,7 +20,7 @@ struct AcuityParams {
   // most displays: no visible loss at all.
   double sigma0_arcmin = 0.172;
   int bands = 8;
-  double noise_gain = 0.25;      // g (seed 001 App. A)
+  double noise_gain = 0.25;      // g (Jacobs et al. 2015 App. A)
   double noise_cell_deg = 0.5;   // spatial spacing of the coarse noise grid
   double noise_period_s = 0.25;  // temporal spacing of the coarse noise grid
   double noise_clip = 2.0;       // X is clipped to [-2, 2]

@@ -1,4 +1,4 @@
-// Puts the afterimage terms onto the tone-mapped frame (seed 001 eq. 12;
+// Puts the afterimage terms onto the tone-mapped frame (Jacobs et al. 2015 eq. 12;
 // MODEL.md 2.4).
 #pragma once
 

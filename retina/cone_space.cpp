@@ -39,7 +39,7 @@ const Eigen::Matrix3d& lms_to_rgb() {
 
 const Eigen::Matrix3d& afterimage_matrix() {
   static const Eigen::Matrix3d h = [] {
-    Eigen::Matrix3d m;  // seed 001 App. A, H
+    Eigen::Matrix3d m;  // Jacobs et al. 2015 App. A, H
     m << 1.14, -1.18, 0.36, -0.08, 1.02, 0.18, 0.30, -0.11, 1.25;
     return m;
   }();

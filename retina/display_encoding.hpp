@@ -1,5 +1,5 @@
 // Display encoding: gamma, clipping and temporally dithered quantisation
-// (seed 001 sec. 2.4 and App. A; MODEL.md 2.1 and 3).
+// (Jacobs et al. 2015 sec. 2.4 and App. A; MODEL.md 2.1 and 3).
 #pragma once
 
 #include <cstdint>
@@ -8,7 +8,7 @@
 namespace eyestream::retina {
 
 struct EncodingParams {
-  double gamma = 0.455;  // display value J^gamma (seed 001 App. A)
+  double gamma = 0.455;  // display value J^gamma (Jacobs et al. 2015 App. A)
   bool dither = true;    // temporal dithering before quantisation
   std::uint64_t seed = 0;
 };

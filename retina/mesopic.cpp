@@ -9,7 +9,7 @@
 namespace eyestream::retina {
 
 double mesopic_rho(double log_l, const MesopicParams& p) {
-  return (log_l - p.bottom_log) / (p.top_log - p.bottom_log);  // seed 001 eq. 13
+  return (log_l - p.bottom_log) / (p.top_log - p.bottom_log);  // Jacobs et al. 2015 eq. 13
 }
 
 bool mesopic_colour(double adaptation_log, const MesopicParams& p, MesopicColour& out) {

@@ -1,5 +1,5 @@
 // Mesopic colour: the Purkinje shift and the hue shift toward a dull purple
-// (seed 001 sec. 2.3, eq. 13 and App. A; MODEL.md 3).
+// (Jacobs et al. 2015 sec. 2.3, eq. 13 and App. A; MODEL.md 3).
 #pragma once
 
 #include <opencv2/core.hpp>
@@ -9,7 +9,7 @@ namespace eyestream::retina {
 struct MesopicParams {
   double top_log = 0.0;      // m1: log10 cd/m^2 where vision is fully photopic
   double bottom_log = -2.0;  // m2: log10 cd/m^2 where it is fully scotopic
-  // Scotopic RGB luminance weights wS (seed 001 App. A, after Kirk and O'Brien).
+  // Scotopic RGB luminance weights wS (Jacobs et al. 2015 App. A, after Kirk and O'Brien).
   double scotopic_weights[3] = {0.0, 0.8451, 0.1459};
   // The colour a neutral grey drifts to in the dark (Shin et al. via seed
   // 001 sec. 2.3.2: "a dull purple"), linear Rec.709, any scale: a purple
@@ -29,7 +29,7 @@ struct MesopicParams {
   double local_margin_log = 1.0;
 };
 
-// rho = (L - m2) / (m1 - m2) for log10 luminance L (seed 001 eq. 13),
+// rho = (L - m2) / (m1 - m2) for log10 luminance L (Jacobs et al. 2015 eq. 13),
 // unclamped.
 double mesopic_rho(double log_luminance, const MesopicParams& p);
 

@@ -31,8 +31,9 @@ void equilibrium(const cv::Mat& lms, const ToneCurve& curve, const Photoreceptor
       for (int x = 0; x < lms.cols; ++x)
         for (int c = 0; c < 3; ++c) {
           const T i = stimulus(s[x][c]);
-          b[x][c] = bleach_equilibrium<T>(i, T(p.bleach_rate[c]), T(p.regen_rate_per_s[c]));  // seed 001 eq. 6
-          r[x][c] = T(curve.response(float(i)));                                              // seed 001 eq. 1
+          // Jacobs et al. 2015 eqs. 6 and 1.
+          b[x][c] = bleach_equilibrium<T>(i, T(p.bleach_rate[c]), T(p.regen_rate_per_s[c]));
+          r[x][c] = T(curve.response(float(i)));
         }
     }
   });
@@ -53,8 +54,8 @@ void step_sites(const cv::Mat& lms, const cv::Mat& response, const Photoreceptor
           const T i = stimulus(s[x][c]);
           b[x][c] =
               std::clamp(bleach_step<T>(b[x][c], i, T(dt), T(p.bleach_rate[c]), T(p.regen_rate_per_s[c])), T(0), T(1));
-          const T d_inf = T(c_max) * r[x][c];                                       // seed 001 eq. 10 as a deficit
-          d[x][c] = std::clamp((d[x][c] - d_inf) * decay + d_inf, T(0), T(c_max));  // seed 001 eq. 9
+          const T d_inf = T(c_max) * r[x][c];  // Jacobs et al. 2015 eq. 10 as a deficit
+          d[x][c] = std::clamp((d[x][c] - d_inf) * decay + d_inf, T(0), T(c_max));  // Jacobs et al. 2015 eq. 9
         }
     }
   });
@@ -78,9 +79,9 @@ void afterimage_sites(const PhotoreceptorParams& p, double c_max, const Afterima
       for (int x = 0; x < bleached.cols; ++x)
         for (int c = 0; c < 3; ++c) {
           double g = 1.0, j = 0.0;
-          if (o.local_adaptation)  // seed 001 eqs. 11-12: alpha^j2
+          if (o.local_adaptation)  // Jacobs et al. 2015 eqs. 11-12: alpha^j2
             g = std::pow(double(local_gain<T>(d[x][c], r[x][c], T(c_max), T(p.gain_epsilon))), p.adaptation_strength);
-          if (o.bleaching)  // seed 001 eq. 12: j1 (C / C_max) max(B - B_inf, 0)
+          if (o.bleaching)  // Jacobs et al. 2015 eq. 12: j1 (C / C_max) max(B - B_inf, 0)
             j = p.bleaching_strength * (1.0 - double(d[x][c]) / c_max) * std::max(double(b[x][c] - b_inf[x][c]), 0.0);
           gain[x][c] = float(visible[x] * (g - 1.0));
           bleach[x][c] = float(visible[x] * j);

@@ -1,5 +1,5 @@
 // Per-site, per-cone photopigment bleaching B and calcium deficit D on the
-// retinal grid, and the afterimage maps they produce (seed 001 sec. 2.2;
+// retinal grid, and the afterimage maps they produce (Jacobs et al. 2015 sec. 2.2;
 // MODEL.md 2.2-2.4).
 #pragma once
 
@@ -35,7 +35,7 @@ class RetinaState {
   void rest(const cv::Mat& lms, const ToneCurve& curve);
 
   // Advances every site by dt_s seconds at the constant stimulus `lms`,
-  // exactly (seed 001 eqs. 5 and 9). Non-finite or negative stimuli count as
+  // exactly (Jacobs et al. 2015 eqs. 5 and 9). Non-finite or negative stimuli count as
   // 0. Afterwards 0 <= B <= 1 and 0 <= D <= C_max. Remembers the stimulus's
   // equilibrium and responses for soften() and afterimages().
   void step(const cv::Mat& lms, const ToneCurve& curve, double dt_s);

@@ -1,7 +1,7 @@
 // A smooth standard-normal random field over space and time: independent
 // N(0,1) values on a coarse grid (a hash of seed, stream and grid node, so
 // any thread computes the same), interpolated with smoothstep weights and
-// renormalised so every point is again N(0,1) (seed 001 sec. 2.3.3: "draw
+// renormalised so every point is again N(0,1) (Jacobs et al. 2015 sec. 2.3.3: "draw
 // samples X at a lower spatial and temporal resolution than the scene and
 // interpolate").
 #pragma once

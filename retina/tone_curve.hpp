@@ -1,5 +1,5 @@
 // The Naka-Rushton tone curve parameterised by the adaptation level
-// (seed 001 eqs. 1-2; MODEL.md 2.1).
+// (Jacobs et al. 2015 eqs. 1-2; MODEL.md 2.1).
 #pragma once
 
 namespace eyestream::retina {
@@ -15,7 +15,7 @@ namespace eyestream::retina {
 // (100 cd/m^2) and 0.37 in daylight (1e4 cd/m^2): display codes 0.22, 0.35,
 // 0.54 and 0.64 after gamma 0.455. Night looks dark, day mid-grey.
 struct ToneCurveParams {
-  double exponent = 0.7;           // n (seed 001 App. A)
+  double exponent = 0.7;           // n (Jacobs et al. 2015 App. A)
   double plateau_low = 0.03;       // M in total darkness
   double plateau_high = 0.40;      // M in bright daylight
   double plateau_mid_log = 1.5;    // log10 cd/m^2 where M is halfway
@@ -25,13 +25,13 @@ struct ToneCurveParams {
 double plateau(double log_luminance, const ToneCurveParams& p);
 
 // Naka-Rushton curve for one adaptation level. sigma follows from R(Ib) =
-// M(Ib): sigma = Ib (1/M - 1)^(1/n) (seed 001 eq. 2, solved in log form so
+// M(Ib): sigma = Ib (1/M - 1)^(1/n) (Jacobs et al. 2015 eq. 2, solved in log form so
 // 1e-6 .. 1e9 cd/m^2 stay finite). Immutable and thread-safe.
 class ToneCurve {
  public:
   ToneCurve(double adaptation_log, const ToneCurveParams& p);
   // R(I) = I^n / (I^n + sigma^n) in [0, 1); 0 for I <= 0 or NaN; 1 for +inf
-  // (seed 001 eq. 1).
+  // (Jacobs et al. 2015 eq. 1).
   float response(float luminance) const;
 
  private:

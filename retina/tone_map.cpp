@@ -33,13 +33,13 @@ void tone_map(const cv::Mat& rgb, const ToneCurve& curve, const MesopicColour& m
         const cv::Vec3f p = in[x];
         const float yp = photopic_luminance(p);
         const float ys = m.scotopic_weights.dot(p);
-        const float ym = rho * yp + (1.0f - rho) * ys;  // Purkinje: seed 001 sec. 2.3.1
+        const float ym = rho * yp + (1.0f - rho) * ys;  // Purkinje: Jacobs et al. 2015 sec. 2.3.1
         if (!(yp > 0.0f) || !(ym > 0.0f) || !std::isfinite(ym)) {
           o[x] = cv::Vec3f(0, 0, 0);
           continue;
         }
         const float r = curve.response(ym);
-        o[x] = p * (scene_share * r / yp) + tint * r;  // hue shift: seed 001 sec. 2.3.2
+        o[x] = p * (scene_share * r / yp) + tint * r;  // hue shift: Jacobs et al. 2015 sec. 2.3.2
       }
     }
   });

@@ -1,4 +1,4 @@
-// Applies the tone curve to a frame, keeping colour ratios (seed 001 sec.
+// Applies the tone curve to a frame, keeping colour ratios (Jacobs et al. 2015 sec.
 // 2.1: "enforcing a consistent ratio between color channels").
 #pragma once
 
@@ -16,7 +16,7 @@ namespace eyestream::retina {
 // not depend on the thread count.
 void tone_map(const cv::Mat& rgb, const ToneCurve& curve, cv::Mat& display_linear);
 
-// Mesopic tone mapping (seed 001 secs. 2.3.1-2.3.2): the curve is applied to
+// Mesopic tone mapping (Jacobs et al. 2015 secs. 2.3.1-2.3.2): the curve is applied to
 // the mesopic luminance Ym = rho Yp + (1 - rho) Ys (Purkinje shift), and
 // colour is rebuilt from rho rgb / Yp + (1 - rho) tint_ratio (hue shift and
 // desaturation toward the scotopic grey). The output's photopic luminance

@@ -1,5 +1,5 @@
 // The `adaptation` scene: a long fixation between a bright white patch and
-// a saturated blue patch on grey, then uniform grey (seed 001 fig. 9).
+// a saturated blue patch on grey, then uniform grey (Jacobs et al. 2015 fig. 9).
 #pragma once
 
 #include "samples/scene.hpp"

@@ -1,5 +1,5 @@
 // The `dusk` scene: a colour checker and a resolution target under light
-// fading from daylight to deep mesopic and back (seed 001 figs. 11-12).
+// fading from daylight to deep mesopic and back (Jacobs et al. 2015 figs. 11-12).
 #pragma once
 
 #include <opencv2/core.hpp>

@@ -1,6 +1,6 @@
 // The `headlights` scene: a still night view of an oncoming car's
 // headlights with a dim pedestrian target a few degrees beside them, the
-// gaze on the target (seeds 000, 003: glare and visibility).
+// gaze on the target (Spencer et al. 1995, Yoshida et al. 2008: glare and visibility).
 #pragma once
 
 #include <opencv2/core.hpp>

@@ -5,7 +5,7 @@
 namespace eyestream::retina {
 namespace {
 
-const AdaptationParams kSeed;  // a1 = 0.75, a2 = 0.2 (seed 001 App. A)
+const AdaptationParams kSeed;  // a1 = 0.75, a2 = 0.2 (Jacobs et al. 2015 App. A)
 
 TEST(Adaptation, MovesTowardBrighterAtRateA1) {
   EXPECT_DOUBLE_EQ(adaptation_step(0.0, 3.0, 1.0, kSeed), 0.75);

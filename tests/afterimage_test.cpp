@@ -1,4 +1,4 @@
-// The afterimage claims of seed 001 sec. 2.2 (MODEL.md 2.2-2.4), through the
+// The afterimage claims of Jacobs et al. 2015 sec. 2.2 (MODEL.md 2.2-2.4), through the
 // whole eye simulator.
 #include <gtest/gtest.h>
 
@@ -110,7 +110,7 @@ TEST(Afterimages, StateConvergesToRestAfterTheStimulusChanges) {
   EXPECT_LT(difference, 1e-4);
 }
 
-// seed 001 figs. 4, 5 and 7: a 1e7 cd/m^2 neutral flash leaves an
+// Jacobs et al. 2015 figs. 4, 5 and 7: a 1e7 cd/m^2 neutral flash leaves an
 // afterimage that starts cyan, turns green as the S cones recover, and ends
 // magenta as only the L cones stay bleached, fading within seconds.
 TEST(Afterimages, BrightFlashAfterimageGoesCyanThenGreenThenMagentaAndFades) {
@@ -133,7 +133,7 @@ TEST(Afterimages, BrightFlashAfterimageGoesCyanThenGreenThenMagentaAndFades) {
   EXPECT_LT(cv::norm(colours.back(), cv::NORM_INF), 0.1f * peak) << "faded after 6 s";
 }
 
-// seed 001 fig. 5: dimmer flashes (1e3-1e4) start pink/magenta, brighter
+// Jacobs et al. 2015 fig. 5: dimmer flashes (1e3-1e4) start pink/magenta, brighter
 // ones (1e5 and up) green or cyan; the transition lies between 1e4 and 1e5.
 TEST(Afterimages, DimFlashesStartMagentaAndTheGreenOnsetLiesBetween1e4And1e5) {
   auto start_hue = [](float luminance) { return hue_deg(flash_then_darkness(luminance, 0.05).front()); };
@@ -147,7 +147,7 @@ TEST(Afterimages, DimFlashesStartMagentaAndTheGreenOnsetLiesBetween1e4And1e5) {
   }
 }
 
-// seed 001 fig. 9: after fixating a bright patch, a uniform grey shows a
+// Jacobs et al. 2015 fig. 9: after fixating a bright patch, a uniform grey shows a
 // darker patch there (negative afterimage); a blue patch leaves a yellowish one.
 TEST(Afterimages, FixatedPatchesLeaveNegativeAndOpponentAfterimages) {
   cv::Mat patches = test::constant_frame(kW, kH, {100, 100, 100});

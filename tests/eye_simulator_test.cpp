@@ -39,7 +39,7 @@ double mean_output(EyeSimulator& eye, float luminance, int index, bool closed = 
   return mean_rgb(eye, luminance, index, closed)[1];
 }
 
-// seed 001 sec. 2.1 and fig. 2: stepping from a dark to a bright scene, the
+// Jacobs et al. 2015 sec. 2.1 and fig. 2: stepping from a dark to a bright scene, the
 // output starts bright and darkens over the following second as the viewer
 // adapts at a1 = 0.75 log units/s.
 TEST(EyeSimulator, StepFromDarkToBrightDarkensOverTheFollowingSecond) {
@@ -84,7 +84,7 @@ TEST(EyeSimulator, ClosedEyesSeeDarknessAndAdaptTowardIt) {
   mean_output(without, 10.0f, 0);
   mean_output(with, 10.0f, 0);
   EXPECT_EQ(mean_output(without, 10.0f, 1, true), 0.0);
-  // A dim scene bleaches mostly L cones: a reddish afterimage (H, seed 001).
+  // A dim scene bleaches mostly L cones: a reddish afterimage (H, Jacobs et al. 2015).
   const cv::Scalar afterimage_rgb = mean_rgb(with, 10.0f, 1, true);
   const double afterimage = std::max({afterimage_rgb[0], afterimage_rgb[1], afterimage_rgb[2]});
   EXPECT_GT(afterimage, 0.0);

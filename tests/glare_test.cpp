@@ -1,4 +1,4 @@
-// The optics claims of seeds 000 and 003 (MODEL.md 1).
+// The optics claims of Spencer et al. 1995 and Yoshida et al. 2008 (MODEL.md 1).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -59,7 +59,7 @@ TEST(Glare, WeightsSumToOneAndBlendContinuously) {
   }
 }
 
-// seed 000: the share of light scattered beyond 0.05 deg rises from about
+// Spencer et al. 1995: the share of light scattered beyond 0.05 deg rises from about
 // 0.36 at age 20 to about 0.45 at age 60.
 TEST(Glare, ScatterBeyondFiveHundredthsOfADegreeGrowsWithAge) {
   ViewerProfile young, old;
@@ -88,7 +88,7 @@ std::vector<double> radial(const cv::Mat& k) {
   return sum;
 }
 
-// seed 000: a point source shows a coloured halo ring near 3 deg under
+// Spencer et al. 1995: a point source shows a coloured halo ring near 3 deg under
 // scotopic adaptation (pupil wide) and none under photopic (pupil narrow).
 TEST(Glare, HaloRingNearThreeDegreesOnlyWhenThePupilIsWide) {
   const ComponentKernels& k = kernels();
@@ -156,7 +156,7 @@ TEST(Glare, OlderViewersSeeMoreVeil) {
   const cv::Point at(kW / 2 + int(5 * kPpd), kH / 2);  // 5 deg away
   const float veil_young = engine.convolve(scene, psf_weights(young, 0.0, 3.0)).at<cv::Vec3f>(at)[1];
   const float veil_old = engine.convolve(scene, psf_weights(old, 0.0, 3.0)).at<cv::Vec3f>(at)[1];
-  // The ratio the continuous model predicts at 5 deg (seed 000 eqs. 5-10).
+  // The ratio the continuous model predicts at 5 deg (Spencer et al. 1995 eqs. 5-10).
   auto psf_at = [](const PsfWeights& w, double t) {
     return w.core * vos_f0(t) + w.inner * vos_f1(t) + w.outer * vos_f2(t) + w.halo * vos_f3(t, 568.0);
   };

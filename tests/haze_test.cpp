@@ -41,7 +41,7 @@ TEST(Haze, WeightsStayValidAtEveryAgeAndHazeAndTheCoronaKeepsItsShare) {
         EXPECT_NEAR(w.core + w.inner + w.outer + w.halo, 1.0, 1e-12);
         EXPECT_DOUBLE_EQ(w.inner, 0.478) << "age " << age << ", haze " << haze << ": f1 is never renormalised";
       }
-  // Below the clamp the age term is seed 000's eq. 10 to the letter.
+  // Below the clamp the age term is Spencer et al. 1995's eq. 10 to the letter.
   EXPECT_NEAR(weights_for(60, 0).core, 0.384 - 6.9e-9 * std::pow(60.0, 4.0), 1e-12);
 }
 

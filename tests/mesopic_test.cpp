@@ -1,4 +1,4 @@
-// The mesopic claims of seed 001 sec. 2.3 (MODEL.md 3).
+// The mesopic claims of Jacobs et al. 2015 sec. 2.3 (MODEL.md 3).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -142,7 +142,7 @@ TEST(Mesopic, FineDetailFallsWithLuminanceAndFlickersButRepeatsWithTheSeed) {
     previous = k;
   }
   EXPECT_LT(previous, 0.5) << "deep mesopic: most detail gone";
-  // Unstable in time at a mesopic level (seed 001 fig. 12)...
+  // Unstable in time at a mesopic level (Jacobs et al. 2015 fig. 12)...
   const cv::Mat t0 = render(stage, plan, -1.0, 0.0), t1 = render(stage, plan, -1.0, 1.0);
   EXPECT_GT(cv::norm(t0, t1, cv::NORM_INF), 0.01);
   // ...yet identical for the same seed, and different for another.

@@ -12,7 +12,7 @@ namespace {
 
 const PhotoreceptorParams kP;
 
-// Classic RK4 on dB/dt = b1 (1 - B) I - b2 B (seed 001 eq. 4).
+// Classic RK4 on dB/dt = b1 (1 - B) I - b2 B (Jacobs et al. 2015 eq. 4).
 double integrate_bleaching(double b, double i, double dt, double b1, double b2, int steps) {
   auto f = [&](double x) { return b1 * (1 - x) * i - b2 * x; };
   const double h = dt / steps;
@@ -23,7 +23,7 @@ double integrate_bleaching(double b, double i, double dt, double b1, double b2, 
   return b;
 }
 
-// RK4 on dC/dt = c1 (1 - R) - c2 C (seed 001 eq. 8 with S = 1 - R).
+// RK4 on dC/dt = c1 (1 - R) - c2 C (Jacobs et al. 2015 eq. 8 with S = 1 - R).
 double integrate_calcium(double c, double r, double dt, double c1, double c2, int steps) {
   auto f = [&](double x) { return c1 * (1 - r) - c2 * x; };
   const double h = dt / steps;
@@ -61,7 +61,7 @@ TEST(Photoreceptor, ExactCalciumStepMatchesFineIntegration) {
 TEST(Photoreceptor, GainIsOneAtRestBelowOneWhenCalciumLagsAndFiniteInTheDark) {
   const double c_max = 1.0, e = kP.gain_epsilon;
   EXPECT_DOUBLE_EQ(local_gain(0.4, 0.4, c_max, e), 1.0);
-  // C < C_inf (D > D_inf): alpha < 1 (seed 001 after eq. 11).
+  // C < C_inf (D > D_inf): alpha < 1 (Jacobs et al. 2015 after eq. 11).
   EXPECT_LT(local_gain(0.8, 0.2, c_max, e), 1.0);
   EXPECT_GT(local_gain(0.1, 0.6, c_max, e), 1.0);
   // The dark limit R -> 0, C -> C_max (D -> 0): 0/0 in eq. 11, here finite.

@@ -14,7 +14,7 @@ namespace {
 const ToneCurveParams kDefaults;
 
 TEST(ToneCurve, AdaptedBackgroundRestsOnThePlateau) {
-  // seed 001 eq. 2: R(Ib) = M(Ib) when adapted to Ib.
+  // Jacobs et al. 2015 eq. 2: R(Ib) = M(Ib) when adapted to Ib.
   for (double a : {-5.0, -2.0, 0.0, 1.5, 3.0, 6.0}) {
     const ToneCurve curve(a, kDefaults);
     EXPECT_NEAR(curve.response(float(std::pow(10.0, a))), plateau(a, kDefaults), 1e-5) << a;
