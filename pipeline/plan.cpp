@@ -22,7 +22,6 @@ Plan compile_plan(const Settings& s, const io::SourceInfo& source) {
   p.dark_log = std::log10(s.dark_cd_m2);
   p.surround_from_edge = !s.surround_cd_m2.has_value();
   p.surround_cd_m2 = std::max(s.surround_cd_m2.value_or(1.0), s.dark_cd_m2);
-  p.surround_log = std::log10(p.surround_cd_m2);
   p.pupil = s.pupil_dynamics;
   p.adaptation = s.adaptation;
   p.tone = s.tone;

@@ -49,7 +49,7 @@ struct Plan {
   double frames_per_second = 30.0;
   double fov_deg = 0.0, pixels_per_degree = 0.0;
   double patch_half_px = 0.0;  // half side of the adaptation patch
-  double surround_cd_m2 = 1.0, surround_log = 0.0;  // fixed surround
+  double surround_cd_m2 = 1.0;                       // fixed surround
   bool surround_from_edge = true;                    // or the frame's edge, frame by frame (settings.hpp)
   glare::PupilDynamics pupil;
   double dark_cd_m2 = 1e-6, dark_log = -6.0;

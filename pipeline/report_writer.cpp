@@ -73,10 +73,6 @@ void ReportWriter::add(std::int64_t frame, double time_s, size_t viewer, const F
   }
 }
 
-void ReportWriter::finish() {
-  for (io::StagedFile& f : stage()) f.commit();
-}
-
 std::vector<io::StagedFile> ReportWriter::stage() const {
   nlohmann::json viewers = nlohmann::json::array();
   for (size_t i = 0; i < viewers_.size(); ++i) {

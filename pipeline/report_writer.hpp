@@ -39,10 +39,8 @@ class ReportWriter {
  public:
   ReportWriter(std::string csv_path, std::vector<ReportViewer> viewers);
   void add(std::int64_t frame, double time_s, size_t viewer, const FrameReport& r);
-  // Writes FILE.csv, FILE.json and FILE.png.
-  void finish();
-  // The same files written under temporary names, for the caller to commit
-  // with the run's other outputs.
+  // Writes FILE.csv, FILE.json and FILE.png under temporary names, for the
+  // caller to commit with the run's other outputs.
   std::vector<io::StagedFile> stage() const;
   // Checkpoints: the rows and summaries so far, and back.
   nlohmann::json save() const;

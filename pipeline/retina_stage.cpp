@@ -167,8 +167,6 @@ void RetinaStage::restore(const std::vector<cv::Mat>& mats, bool started) {
   started_ = started;
 }
 
-void RetinaStage::write_state(const std::string& path) const { stage_state(path).commit(); }
-
 io::StagedFile RetinaStage::stage_state(const std::string& path) const {
   std::vector<cv::Mat> b, c;
   cv::Mat b32, c32;

@@ -44,9 +44,8 @@ class RetinaStage {
   bool stepped() const { return stepped_; }
 
   // Writes B and C per cone (channels B.L, B.M, B.S, C.L, C.M, C.S) of the
-  // grid as a float EXR.
-  void write_state(const std::string& path) const;
-  // The same, left under its temporary name for the caller to commit.
+  // grid as a float EXR, left under its temporary name for the caller to
+  // commit.
   io::StagedFile stage_state(const std::string& path) const;
 
   const retina::RetinaState& state() const { return state_; }
