@@ -3,8 +3,10 @@
 #include <fftw3.h>
 
 #include <algorithm>
+#include <complex>
 #include <cstring>
 #include <mutex>
+#include <vector>
 
 namespace eyestream::glare {
 
@@ -14,6 +16,51 @@ namespace {
 std::mutex& planner_mutex() {
   static std::mutex m;
   return m;
+}
+
+// FFTW's interface, under names the engine reads well with.
+struct Fftw {
+  using Plan = fftw_plan;
+  using Complex = fftw_complex;
+  static double* real(size_t n) { return fftw_alloc_real(n); }
+  static Complex* complex(size_t n) { return fftw_alloc_complex(n); }
+  static void free(void* p) { fftw_free(p); }
+  static Plan r2c(int n, double* in, Complex* out) { return fftw_plan_dft_r2c_1d(n, in, out, FFTW_ESTIMATE); }
+  static Plan c2r(int n, Complex* in, double* out) { return fftw_plan_dft_c2r_1d(n, in, out, FFTW_ESTIMATE); }
+  static Plan columns(int n, int howmany, int stride, Complex* data, int sign) {
+    return fftw_plan_many_dft(1, &n, howmany, data, nullptr, stride, 1, data, nullptr, stride, 1, sign, FFTW_ESTIMATE);
+  }
+  static void r2c(Plan p, double* in, Complex* out) { fftw_execute_dft_r2c(p, in, out); }
+  static void c2r(Plan p, Complex* in, double* out) { fftw_execute_dft_c2r(p, in, out); }
+  static void c2c(Plan p, Complex* data) { fftw_execute_dft(p, data, data); }
+  static void destroy(Plan p) { fftw_destroy_plan(p); }
+};
+
+
+constexpr int kColumnBlock = 16;  // columns transformed together (fixed: results do not depend on threads)
+
+// The spectrum of a centred kernel on an nx x ny torus (double; r2c layout
+// ny x (nx / 2 + 1)).
+std::vector<std::complex<double>> kernel_spectrum(const cv::Mat& kernel, int nx, int ny) {
+  std::lock_guard<std::mutex> lock(planner_mutex());
+  double* real = fftw_alloc_real(size_t(nx) * ny);
+  fftw_complex* spectrum = fftw_alloc_complex(size_t(nx / 2 + 1) * ny);
+  const fftw_plan plan = fftw_plan_dft_r2c_2d(ny, nx, real, spectrum, FFTW_ESTIMATE);
+  std::memset(real, 0, sizeof(double) * size_t(nx) * ny);
+  const int cx = kernel.cols / 2, cy = kernel.rows / 2;
+  for (int y = 0; y < kernel.rows; ++y)
+    for (int x = 0; x < kernel.cols; ++x) {
+      const int wx = ((x - cx) % nx + nx) % nx, wy = ((y - cy) % ny + ny) % ny;
+      real[size_t(wy) * nx + wx] += kernel.at<double>(y, x);
+    }
+  fftw_execute(plan);
+  const size_t n = size_t(nx / 2 + 1) * ny;
+  std::vector<std::complex<double>> out(n);
+  for (size_t i = 0; i < n; ++i) out[i] = {spectrum[i][0], spectrum[i][1]};
+  fftw_destroy_plan(plan);
+  fftw_free(real);
+  fftw_free(spectrum);
+  return out;
 }
 
 }  // namespace
@@ -27,85 +74,152 @@ int fft_size(int minimum) {
   }
 }
 
-struct FftConvolver::Channel {
-  double* real = nullptr;
-  fftw_complex* spectrum = nullptr;
-  fftw_plan forward = nullptr, backward = nullptr;
-  Channel(int nx, int ny) {
-    std::lock_guard<std::mutex> lock(planner_mutex());
-    real = fftw_alloc_real(size_t(nx) * ny);
-    spectrum = fftw_alloc_complex(size_t(nx / 2 + 1) * ny);
-    forward = fftw_plan_dft_r2c_2d(ny, nx, real, spectrum, FFTW_ESTIMATE);
-    backward = fftw_plan_dft_c2r_2d(ny, nx, spectrum, real, FFTW_ESTIMATE);
-  }
-  ~Channel() {
-    std::lock_guard<std::mutex> lock(planner_mutex());
-    fftw_destroy_plan(forward);
-    fftw_destroy_plan(backward);
-    fftw_free(real);
-    fftw_free(spectrum);
-  }
+struct FftConvolver::Engine {
+  virtual ~Engine() = default;
+  virtual void convolve(const cv::Mat& rgb, const PsfWeights& w, cv::Mat& out) const = 0;
+  int nx = 0, ny = 0;
 };
 
-FftConvolver::FftConvolver(const ComponentKernels& k) : width_(k.core.cols / 2 + 1), height_(k.core.rows / 2 + 1) {
-  // A W-wide frame and a kernel reaching +-(W - 1): any n >= 2W - 1 keeps
-  // every offset distinct modulo n, so circular convolution is linear here.
-  nx_ = fft_size(2 * width_ - 1);
-  ny_ = fft_size(2 * height_ - 1);
-  for (int c = 0; c < 3; ++c) channels_.push_back(std::make_unique<Channel>(nx_, ny_));
-  const cv::Point centre = k.centre();
-  auto spectrum_of = [&](const cv::Mat& kernel, std::vector<std::complex<double>>& out) {
-    Channel& ch = *channels_[0];
-    std::memset(ch.real, 0, sizeof(double) * size_t(nx_) * ny_);
-    for (int y = 0; y < kernel.rows; ++y)
-      for (int x = 0; x < kernel.cols; ++x) {
-        const int wx = ((x - centre.x) % nx_ + nx_) % nx_, wy = ((y - centre.y) % ny_ + ny_) % ny_;
-        ch.real[size_t(wy) * nx_ + wx] = kernel.at<double>(y, x);
+namespace {
+
+// A 2-D transform done as row transforms (r2c, only the frame's rows) and
+// column transforms (c2c, in blocks of kColumnBlock), each block of work
+// handed to whichever thread is free: every row and column is computed by
+// the same plan whatever thread runs it.
+class RowColumnEngine final : public FftConvolver::Engine {
+  using F = Fftw;
+  using T = double;
+
+ public:
+  RowColumnEngine(const ComponentKernels& k, int width, int height) : width_(width), height_(height) {
+    const int reach_x = k.core.cols / 2, reach_y = k.core.rows / 2;
+    // Any n >= W + reach keeps every offset of a light inside the frame
+    // from wrapping onto the frame.
+    nx = fft_size(width + reach_x);
+    ny = fft_size(height + reach_y);
+    nc_ = nx / 2 + 1;
+    stride_ = (nc_ + kColumnBlock - 1) / kColumnBlock * kColumnBlock;  // whole blocks: every block aligned alike
+    // Kernel spectra block by block (each block's ny x kColumnBlock values
+    // contiguous), as the column pass reads them, as (re, im) pairs.
+    const cv::Mat* parts[6] = {&k.core, &k.inner, &k.outer, &k.halo[0], &k.halo[1], &k.halo[2]};
+    for (int i = 0; i < 6; ++i) {
+      const std::vector<std::complex<double>> s = kernel_spectrum(*parts[i], nx, ny);
+      spectra_[i].assign(size_t(ny) * stride_ * 2, T(0));
+      for (int y = 0; y < ny; ++y)
+        for (int x = 0; x < nc_; ++x) {
+          const size_t at = (size_t(x / kColumnBlock) * ny + y) * kColumnBlock + x % kColumnBlock;
+          spectra_[i][2 * at] = T(s[size_t(y) * nc_ + x].real());
+          spectra_[i][2 * at + 1] = T(s[size_t(y) * nc_ + x].imag());
+        }
+    }
+    std::lock_guard<std::mutex> lock(planner_mutex());
+    for (auto& d : data_) d = F::complex(size_t(ny) * stride_);
+    T* row = F::real(size_t(nx));
+    forward_row_ = F::r2c(nx, row, data_[0]);
+    backward_row_ = F::c2r(nx, data_[0], row);
+    F::free(row);
+    const int last = nc_ % kColumnBlock;
+    for (int sign : {FFTW_FORWARD, FFTW_BACKWARD}) {
+      column_[sign == FFTW_FORWARD ? 0 : 1][0] = F::columns(ny, kColumnBlock, stride_, data_[0], sign);
+      column_[sign == FFTW_FORWARD ? 0 : 1][1] = last ? F::columns(ny, last, stride_, data_[0], sign) : nullptr;
+    }
+  }
+
+  ~RowColumnEngine() override {
+    std::lock_guard<std::mutex> lock(planner_mutex());
+    F::destroy(forward_row_);
+    F::destroy(backward_row_);
+    for (auto& pair : column_)
+      for (auto& p : pair)
+        if (p) F::destroy(p);
+    for (auto& d : data_) F::free(d);
+  }
+
+  void convolve(const cv::Mat& rgb, const PsfWeights& w, cv::Mat& out) const override {
+    CV_Assert(rgb.type() == CV_32FC3 && rgb.cols == width_ && rgb.rows == height_);
+    out.create(rgb.size(), CV_32FC3);
+    // Rows of each channel: r2c of the frame's rows; the padding rows are 0.
+    cv::parallel_for_(cv::Range(0, 3 * ny), [&](const cv::Range& r) {
+      T* row = F::real(size_t(nx));
+      for (int i = r.start; i < r.end; ++i) {
+        const int c = i / ny, y = i % ny;
+        F::Complex* dst = data_[c] + size_t(y) * stride_;
+        if (y >= height_) {
+          std::memset(static_cast<void*>(dst), 0, sizeof(F::Complex) * size_t(stride_));
+          continue;
+        }
+        const cv::Vec3f* in = rgb.ptr<cv::Vec3f>(y);
+        for (int x = 0; x < width_; ++x) row[x] = T(in[x][c]);
+        std::fill(row + width_, row + nx, T(0));
+        F::r2c(forward_row_, row, dst);
       }
-    fftw_execute(ch.forward);
-    const size_t n = size_t(nx_ / 2 + 1) * ny_;
-    out.resize(n);
-    for (size_t i = 0; i < n; ++i) out[i] = {ch.spectrum[i][0], ch.spectrum[i][1]};
-  };
-  spectrum_of(k.core, core_);
-  spectrum_of(k.inner, inner_);
-  spectrum_of(k.outer, outer_);
-  for (int c = 0; c < 3; ++c) spectrum_of(k.halo[c], halo_[c]);
-}
+      F::free(row);
+    });
+    // Columns: forward, times the channel's kernel, back; block by block.
+    const int blocks = (nc_ + kColumnBlock - 1) / kColumnBlock;
+    const T weight[4] = {T(w.core), T(w.inner), T(w.outer), T(w.halo)};
+    cv::parallel_for_(cv::Range(0, 3 * blocks), [&](const cv::Range& r) {
+      for (int i = r.start; i < r.end; ++i) {
+        const int c = i / blocks, b = i % blocks, x0 = b * kColumnBlock;
+        const int n = std::min(kColumnBlock, nc_ - x0), partial = n < kColumnBlock;
+        F::Complex* block = data_[c] + x0;
+        F::c2c(column_[0][partial], block);
+        const size_t start = size_t(b) * ny * kColumnBlock * 2;
+        const T* k0 = spectra_[0].data() + start;
+        const T* k1 = spectra_[1].data() + start;
+        const T* k2 = spectra_[2].data() + start;
+        const T* k3 = spectra_[3 + c].data() + start;
+        for (int y = 0; y < ny; ++y) {
+          T* v = reinterpret_cast<T*>(block + size_t(y) * stride_);
+          const size_t o = size_t(y) * kColumnBlock * 2;
+          for (int j = 0; j < 2 * n; j += 2) {
+            const T kr = weight[0] * k0[o + j] + weight[1] * k1[o + j] + weight[2] * k2[o + j] + weight[3] * k3[o + j];
+            const T ki = weight[0] * k0[o + j + 1] + weight[1] * k1[o + j + 1] + weight[2] * k2[o + j + 1] +
+                         weight[3] * k3[o + j + 1];
+            const T vr = v[j], vi = v[j + 1];
+            v[j] = vr * kr - vi * ki;
+            v[j + 1] = vr * ki + vi * kr;
+          }
+        }
+        F::c2c(column_[1][partial], block);
+      }
+    });
+    // Rows back, the frame's rows only.
+    const T scale = T(1.0 / (double(nx) * ny));
+    cv::parallel_for_(cv::Range(0, 3 * height_), [&](const cv::Range& r) {
+      T* row = F::real(size_t(nx));
+      for (int i = r.start; i < r.end; ++i) {
+        const int c = i / height_, y = i % height_;
+        F::c2r(backward_row_, data_[c] + size_t(y) * stride_, row);
+        cv::Vec3f* o = out.ptr<cv::Vec3f>(y);
+        for (int x = 0; x < width_; ++x) o[x][c] = float(std::max(row[x] * scale, T(0)));
+      }
+      F::free(row);
+    });
+  }
+
+ private:
+  int width_, height_, nc_ = 0, stride_ = 0;
+  std::vector<T> spectra_[6];  // core, inner, outer, halo R, G, B; block-major (re, im)
+  F::Complex* data_[3] = {};  // one spectrum per channel
+  F::Plan forward_row_ = nullptr, backward_row_ = nullptr;
+  F::Plan column_[2][2] = {};  // [forward, backward][whole block, last partial block]
+};
+
+}  // namespace
+
+FftConvolver::FftConvolver(const ComponentKernels& k)
+    : FftConvolver(k, k.core.cols / 2 + 1, k.core.rows / 2 + 1) {}
+
+FftConvolver::FftConvolver(const ComponentKernels& k, int width, int height)
+    : engine_(std::make_unique<RowColumnEngine>(k, width, height)) {}
 
 FftConvolver::~FftConvolver() = default;
 
-cv::Mat FftConvolver::convolve(const cv::Mat& rgb, const PsfWeights& w) const {
-  CV_Assert(rgb.type() == CV_32FC3 && rgb.cols == width_ && rgb.rows == height_);
-  cv::Mat out(rgb.size(), CV_32FC3);
-  const double scale = 1.0 / (double(nx_) * ny_);
-  cv::parallel_for_(cv::Range(0, 3), [&](const cv::Range& range) {
-    for (int c = range.start; c < range.end; ++c) {
-      Channel& ch = *channels_[size_t(c)];
-      std::memset(ch.real, 0, sizeof(double) * size_t(nx_) * ny_);
-      for (int y = 0; y < height_; ++y) {
-        const cv::Vec3f* in = rgb.ptr<cv::Vec3f>(y);
-        double* row = ch.real + size_t(y) * nx_;
-        for (int x = 0; x < width_; ++x) row[x] = in[x][c];
-      }
-      fftw_execute(ch.forward);
-      const size_t n = size_t(nx_ / 2 + 1) * ny_;
-      for (size_t i = 0; i < n; ++i) {
-        const std::complex<double> k =
-            w.core * core_[i] + w.inner * inner_[i] + w.outer * outer_[i] + w.halo * halo_[c][i];
-        const std::complex<double> v = std::complex<double>(ch.spectrum[i][0], ch.spectrum[i][1]) * k;
-        ch.spectrum[i][0] = v.real();
-        ch.spectrum[i][1] = v.imag();
-      }
-      fftw_execute(ch.backward);
-      for (int y = 0; y < height_; ++y) {
-        cv::Vec3f* o = out.ptr<cv::Vec3f>(y);
-        const double* row = ch.real + size_t(y) * nx_;
-        for (int x = 0; x < width_; ++x) o[x][c] = float(std::max(row[x] * scale, 0.0));
-      }
-    }
-  });
-  return out;
+void FftConvolver::convolve(const cv::Mat& rgb, const PsfWeights& w, cv::Mat& out) const {
+  engine_->convolve(rgb, w, out);
 }
+
+cv::Size FftConvolver::transform_size() const { return {engine_->nx, engine_->ny}; }
 
 }  // namespace eyestream::glare

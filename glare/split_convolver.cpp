@@ -53,6 +53,7 @@ SplitConvolver::SplitConvolver(int width, int height, double ppd, int factor, co
     apply_window(*f[i], factor_, radius_, true);
   }
   far_ = std::make_unique<FftConvolver>(far);
+  near_fft_ = std::make_unique<FftConvolver>(near_, width, height);
 }
 
 SplitConvolver::~SplitConvolver() = default;
@@ -65,24 +66,24 @@ cv::Mat SplitConvolver::convolve(const cv::Mat& rgb, const PsfWeights& w) const 
 }
 
 cv::Mat SplitConvolver::spread_near(const cv::Mat& rgb, const PsfWeights& w) const {
-  cv::Mat kernel[3];
-  for (int c = 0; c < 3; ++c) combined_kernel(near_, w, c).convertTo(kernel[c], CV_32F);
+  // Dense (the whole image, or many lights): by FFT, padded by R only;
+  // decided as soon as the sources' direct cost exceeds the FFT's.
+  const int r = radius_, side = 2 * r + 1;
+  const size_t most = size_t(0.5 * double(near_fft_->transform_size().area()) / (double(side) * side));
   std::vector<Source> sources;  // row by row: sorted by y
+  cv::Mat out;
   for (int y = 0; y < rgb.rows; ++y) {
     const cv::Vec3f* row = rgb.ptr<cv::Vec3f>(y);
     for (int x = 0; x < rgb.cols; ++x)
       if (row[x] != cv::Vec3f()) sources.push_back({x, y, row[x]});
+    if (sources.size() > most) {
+      near_fft_->convolve(rgb, w, out);
+      return out;
+    }
   }
-  const int r = radius_, side = 2 * r + 1;
-  cv::Mat out = cv::Mat::zeros(rgb.size(), CV_32FC3);
-  if (double(sources.size()) * side * side > 4.0 * double(rgb.total())) {  // dense: filter
-    std::vector<cv::Mat> planes;
-    cv::split(rgb, planes);
-    for (int c = 0; c < 3; ++c)
-      cv::filter2D(planes[c], planes[c], CV_32F, kernel[c], cv::Point(-1, -1), 0, cv::BORDER_CONSTANT);
-    cv::merge(planes, out);
-    return out;
-  }
+  out = cv::Mat::zeros(rgb.size(), CV_32FC3);
+  cv::Mat kernel[3];
+  for (int c = 0; c < 3; ++c) combined_kernel(near_, w, c).convertTo(kernel[c], CV_32F);
   // Sparse: each output row gathers the sources within R rows, in order,
   // so the sums do not depend on how rows are split among threads.
   cv::parallel_for_(cv::Range(0, rgb.rows), [&](const cv::Range& rows) {

@@ -9,7 +9,7 @@
 // (tests/split_engine_test.cpp); the upsampled tail keeps its block
 // energies, so the engine moves light without adding any. Near sources are scattered
 // directly when the input is sparse (the excess over the display peak
-// usually is), else filtered; the far part goes through the FFT engine.
+// usually is), else by an FFT padded by R.
 #pragma once
 
 #include <memory>
@@ -39,7 +39,8 @@ class SplitConvolver {
 
   int width_, height_, factor_, radius_, low_width_, low_height_;
   ComponentKernels near_;  // windowed, (2R+1) x (2R+1)
-  std::unique_ptr<FftConvolver> far_;
+  std::unique_ptr<FftConvolver> far_;       // the tail
+  std::unique_ptr<FftConvolver> near_fft_;  // the near part of a dense frame
 };
 
 }  // namespace eyestream::glare

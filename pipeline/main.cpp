@@ -10,6 +10,7 @@
 #include "io/frame_sequence.hpp"
 #include "io/source_factory.hpp"
 #include "io/video_concat.hpp"
+#include "pipeline/frame_buffer_pool.hpp"
 #include "pipeline/bench_chart.hpp"
 #include "pipeline/bench_command.hpp"
 #include "pipeline/chunk_plan.hpp"
@@ -43,6 +44,7 @@ int fail(ExitCode code, const std::string& message) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  reuse_frame_buffers();
   CLI::App app{
       "eyestream: filters HDR video through a model of one viewer's eye and writes what that viewer "
       "would see on an ordinary display."};

@@ -12,6 +12,7 @@ void apply_quality_preset(const std::string& name, Settings& s) {
     s.psf_model = "vos";
     s.glare_engine = "exact";
     s.acuity.pyramid_from_px = 0.0;
+    s.sink.video.preset = "medium";
   } else if (name == "balanced") {
     s.precision = "float";
     s.state_sites_per_pixel = 0.5;
@@ -20,6 +21,7 @@ void apply_quality_preset(const std::string& name, Settings& s) {
     s.glare_engine = "split";
     s.glare_tail_factor = 2;
     s.acuity.pyramid_from_px = 12.0;
+    s.sink.video.preset = "faster";
   } else if (name == "fast") {
     s.precision = "float";
     s.state_sites_per_pixel = 0.25;
@@ -28,6 +30,7 @@ void apply_quality_preset(const std::string& name, Settings& s) {
     s.glare_engine = "split";
     s.glare_tail_factor = 4;
     s.acuity.pyramid_from_px = 6.0;
+    s.sink.video.preset = "veryfast";
   } else {
     throw UsageError("--quality: '" + name + "' is not one of reference|balanced|fast");
   }

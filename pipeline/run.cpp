@@ -10,14 +10,15 @@
 #include <opencv2/core.hpp>
 #include <sstream>
 
+#include "io/background_sink.hpp"
 #include "io/error.hpp"
-#include "io/staged_file.hpp"
-#include "pipeline/output_paths.hpp"
-#include "io/source_factory.hpp"
-#include "io/staged_file.hpp"
 #include "io/gaze_import.hpp"
 #include "io/library_logging.hpp"
+#include "io/prefetch_source.hpp"
 #include "io/sink_factory.hpp"
+#include "io/source_factory.hpp"
+#include "io/staged_file.hpp"
+#include "pipeline/output_paths.hpp"
 #include "pipeline/checkpoint.hpp"
 #include "pipeline/gaze_timeline.hpp"
 #include "pipeline/preview_renderer.hpp"
@@ -61,6 +62,10 @@ io::GazeImportOptions gaze_import_options(const Settings& s, const io::SourceInf
 std::unique_ptr<io::FrameSource> open_input(const Settings& s) {
   return io::open_source(s.input, io::SourceOptions{s.exr, s.video_input, s.frame_size});
 }
+
+// Decoding and encoding on threads of their own beside the eye, unless the
+// run is held to one thread. The frames and their order do not change.
+bool overlap_io(const Settings& s) { return s.threads != 1; }
 
 }  // namespace
 
@@ -122,7 +127,7 @@ RunSummary run(const Settings& s) {
                      std::to_string(s.start_frame));
   cv::setNumThreads(s.threads > 0 ? s.threads : -1);
   io::set_library_verbosity(s.verbose);
-  const std::unique_ptr<io::FrameSource> source = open_input(s);
+  std::unique_ptr<io::FrameSource> source = open_input(s);
   const io::SourceInfo& info = source->info();
   std::vector<io::GazeSample> samples;
   if (!s.gaze.empty()) samples = io::read_gaze(s.gaze, gaze_import_options(s, info));
@@ -131,6 +136,7 @@ RunSummary run(const Settings& s) {
   io::SinkOptions sink_options = s.sink;
   sink_options.video.frames_per_second = info.frames_per_second;
   std::unique_ptr<io::FrameSink> sink = io::make_sink(s.output, sink_options);
+  if (overlap_io(s)) sink = std::make_unique<io::BackgroundSink>(std::move(sink));
   PreviewRenderer renderer(s, info, sink->needs());
   if (s.verbose) std::fprintf(stderr, "%s: %s\n%s", s.input.c_str(), info.description.c_str(), renderer.describe().c_str());
   const size_t main = renderer.main_panel();
@@ -145,6 +151,7 @@ RunSummary run(const Settings& s) {
   RunSummary summary;
   summary.output = s.output;
   Progress progress(info.frame_count, s.progress);
+  if (overlap_io(s)) source = std::make_unique<io::PrefetchSource>(std::move(source));
   const std::int64_t first_processed =
       std::max<std::int64_t>(0, s.start_frame - std::int64_t(std::ceil(s.preroll_s * info.frames_per_second)));
   std::optional<io::SceneFrame> current = source->next();

@@ -1,0 +1,34 @@
+#include "io/prefetch_source.hpp"
+
+namespace eyestream::io {
+
+PrefetchSource::PrefetchSource(std::unique_ptr<FrameSource> source, size_t depth)
+    : source_(std::move(source)), queue_(depth) {
+  reader_ = std::thread([this] {
+    for (;;) {
+      Item item;
+      try {
+        item.frame = source_->next();
+      } catch (...) {
+        item.error = std::current_exception();
+      }
+      const bool last = !item.frame || item.error;
+      if (!queue_.push(std::move(item)) || last) return;
+    }
+  });
+}
+
+PrefetchSource::~PrefetchSource() {
+  queue_.close();
+  reader_.join();
+}
+
+std::optional<SceneFrame> PrefetchSource::next() {
+  if (ended_) return std::nullopt;
+  std::optional<Item> item = queue_.pop();
+  if (!item || !item->frame) ended_ = true;
+  if (item && item->error) std::rethrow_exception(item->error);
+  return item ? std::move(item->frame) : std::nullopt;
+}
+
+}  // namespace eyestream::io

@@ -1,0 +1,36 @@
+// Decodes the next frames on a thread of its own while the eye works on
+// the current one. Frames arrive in the same order and with the same
+// content as from the wrapped source; an error reading a frame is thrown
+// by next() at that frame, as the wrapped source would throw it.
+#pragma once
+
+#include <exception>
+#include <memory>
+#include <thread>
+
+#include "io/bounded_queue.hpp"
+#include "io/frame_source.hpp"
+
+namespace eyestream::io {
+
+class PrefetchSource : public FrameSource {
+ public:
+  // Reads up to `depth` frames ahead.
+  PrefetchSource(std::unique_ptr<FrameSource> source, size_t depth = 2);
+  ~PrefetchSource() override;
+
+  const SourceInfo& info() const override { return source_->info(); }
+  std::optional<SceneFrame> next() override;
+
+ private:
+  struct Item {
+    std::optional<SceneFrame> frame;  // nothing: the end
+    std::exception_ptr error;
+  };
+  std::unique_ptr<FrameSource> source_;
+  BoundedQueue<Item> queue_;
+  bool ended_ = false;
+  std::thread reader_;
+};
+
+}  // namespace eyestream::io
