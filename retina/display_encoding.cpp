@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "retina/hash_random.hpp"
+#include "retina/pow_table.hpp"
 
 namespace eyestream::retina {
 
@@ -11,7 +12,7 @@ namespace {
 
 template <typename T>
 void encode_rows(const cv::Mat& linear, std::int64_t frame, const EncodingParams& p, float max_code, cv::Mat& code) {
-  const float gamma = float(p.gamma);
+  const PowTable& gamma = shared_pow_table(p.gamma);  // 1e-7 relative: below 1e-2 of a 16-bit code
   cv::parallel_for_(cv::Range(0, linear.rows), [&](const cv::Range& rows) {
     for (int y = rows.start; y < rows.end; ++y) {
       const cv::Vec3f* in = linear.ptr<cv::Vec3f>(y);
@@ -23,7 +24,7 @@ void encode_rows(const cv::Mat& linear, std::int64_t frame, const EncodingParams
         for (int c = 0; c < 3; ++c) {
           float j = in[x][c];
           j = std::isfinite(j) ? std::clamp(j, 0.0f, 1.0f) : 0.0f;
-          const float v = std::pow(j, gamma) * max_code;
+          const float v = gamma(j) * max_code;
           float q;
           if (p.dither) {
             // MODEL.md 3: round up with probability equal to the fractional part.

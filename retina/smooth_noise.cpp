@@ -37,28 +37,36 @@ cv::Mat smooth_noise(cv::Size size, double t_s, const SmoothNoiseParams& p, std:
       layer0[size_t(j) * gw + i] = node_value(seed, stream, i0 + i, j0 + j, n0);
       layer1[size_t(j) * gw + i] = node_value(seed, stream, i0 + i, j0 + j, n0 + 1);
     }
+  // The weights are products wx wy wt, so the sum factors: blend the node
+  // rows in time and y once per row, then in x per pixel; and the weights'
+  // sum of squares is the product of the three axes' sums.
+  std::vector<int> column(size_t(size.width));
+  std::vector<double> wx1(size_t(size.width)), sq_x(size_t(size.width));
+  for (int x = 0; x < size.width; ++x) {
+    const double gx = (x + 0.5 - origin.x) / p.cell_px - double(i0);
+    column[size_t(x)] = int(std::floor(gx));
+    wx1[size_t(x)] = smoothstep(gx - column[size_t(x)]);
+    sq_x[size_t(x)] = wx1[size_t(x)] * wx1[size_t(x)] + (1.0 - wx1[size_t(x)]) * (1.0 - wx1[size_t(x)]);
+  }
+  const double sq_t = wt0 * wt0 + wt1 * wt1;
   cv::Mat out(size, CV_32F);
   cv::parallel_for_(cv::Range(0, size.height), [&](const cv::Range& rows) {
+    std::vector<double> blend(static_cast<size_t>(gw));
     for (int y = rows.start; y < rows.end; ++y) {
       const double gy = (y + 0.5 - origin.y) / p.cell_px - double(j0);
       const int j = int(std::floor(gy));
       const double wy1 = smoothstep(gy - j), wy0 = 1.0 - wy1;
+      const float* a0 = &layer0[size_t(j) * gw];
+      const float* a1 = &layer1[size_t(j) * gw];
+      for (int i = 0; i < gw; ++i)
+        blend[size_t(i)] = wt0 * (wy0 * a0[i] + wy1 * a0[i + gw]) + wt1 * (wy0 * a1[i] + wy1 * a1[i + gw]);
+      const double sq_ty = sq_t * (wy0 * wy0 + wy1 * wy1);
       float* o = out.ptr<float>(y);
       for (int x = 0; x < size.width; ++x) {
-        const double gx = (x + 0.5 - origin.x) / p.cell_px - double(i0);
-        const int i = int(std::floor(gx));
-        const double wx1 = smoothstep(gx - i), wx0 = 1.0 - wx1;
-        const double w[8] = {wx0 * wy0 * wt0, wx1 * wy0 * wt0, wx0 * wy1 * wt0, wx1 * wy1 * wt0,
-                             wx0 * wy0 * wt1, wx1 * wy0 * wt1, wx0 * wy1 * wt1, wx1 * wy1 * wt1};
-        const size_t a = size_t(j) * gw + i, b = a + 1, c = a + gw, d = c + 1;
-        const double v[8] = {layer0[a], layer0[b], layer0[c], layer0[d], layer1[a], layer1[b], layer1[c], layer1[d]};
-        double sum = 0.0, sum_sq = 0.0;
-        for (int k = 0; k < 8; ++k) {
-          sum += w[k] * v[k];
-          sum_sq += w[k] * w[k];
-        }
+        const size_t i = size_t(column[size_t(x)]);
+        const double sum = (1.0 - wx1[size_t(x)]) * blend[i] + wx1[size_t(x)] * blend[i + 1];
         // A weighted sum of independent N(0,1) has variance sum w^2: renormalise.
-        o[x] = float(std::clamp(sum / std::sqrt(sum_sq), -p.clip, p.clip));
+        o[x] = float(std::clamp(sum / std::sqrt(sq_x[size_t(x)] * sq_ty), -p.clip, p.clip));
       }
     }
   });

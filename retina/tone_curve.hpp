@@ -2,6 +2,8 @@
 // (Jacobs et al. 2015 eqs. 1-2; MODEL.md 2.1).
 #pragma once
 
+#include "retina/pow_table.hpp"
+
 namespace eyestream::retina {
 
 // The plateau M(L) is the response a steady background L settles to. Seed
@@ -31,12 +33,21 @@ class ToneCurve {
  public:
   ToneCurve(double adaptation_log, const ToneCurveParams& p);
   // R(I) = I^n / (I^n + sigma^n) in [0, 1); 0 for I <= 0 or NaN; 1 for +inf
-  // (Jacobs et al. 2015 eq. 1).
-  float response(float luminance) const;
+  // (Jacobs et al. 2015 eq. 1). The power comes from a table (relative
+  // error under 2e-7, pow_table.hpp).
+  float response(float luminance) const {
+    if (!(luminance > 0.0f)) return 0.0f;
+    // As 1 / (1 + (sigma/I)^n), no overflow of I^n; the table takes the
+    // ratio or its inverse, whichever is at most 1.
+    const float ratio = sigma_ / luminance;
+    if (ratio <= 1.0f) return 1.0f / (1.0f + (*power_)(ratio));
+    const float q = (*power_)(1.0f / ratio);
+    return q / (q + 1.0f);
+  }
 
  private:
   float sigma_;
-  float exponent_;
+  const PowTable* power_;  // x^n for x in [0, 1]
 };
 
 }  // namespace eyestream::retina
