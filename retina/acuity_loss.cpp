@@ -20,6 +20,8 @@ AcuityLoss::AcuityLoss(const AcuityParams& p, double pixels_per_degree, std::uin
     sigmas_px_.push_back(sigma_deg * pixels_per_degree);
     const double needed = std::min(p.band_margin * gaussian_cutoff_cpd(sigma_deg), finest_cpd);
     tau_.push_back((acuity_log_luminance(needed) - bottom_log) / (top_log - bottom_log));
+    // apply() relies on it: a coarser band never needs more light.
+    CV_Assert(i == 0 || tau_[size_t(i)] <= tau_[size_t(i) - 1]);
   }
   noise_.cell_px = std::max(1.0, p.noise_cell_deg * pixels_per_degree);
   noise_.period_s = p.noise_period_s;
@@ -79,34 +81,74 @@ void acuity_blur(const cv::Mat& src, cv::Mat& dst, double sigma, double pyramid_
   cv::resize(small, dst, src.size(), 0, 0, cv::INTER_LINEAR);
 }
 
+namespace {
+
+// The value of `m` (CV_32FC3, the image reduced by f) at full-resolution
+// pixel (x, y): bilinear, pixel centres at (x + 0.5) / f - 0.5, borders
+// replicated (as cv::resize INTER_LINEAR).
+cv::Vec3f sample(const cv::Mat& m, int f, int x, int y) {
+  if (f == 1) return m.ptr<cv::Vec3f>(y)[x];
+  const float inv = 1.0f / float(f);
+  const float gx = std::clamp((float(x) + 0.5f) * inv - 0.5f, 0.0f, float(m.cols - 1));
+  const float gy = std::clamp((float(y) + 0.5f) * inv - 0.5f, 0.0f, float(m.rows - 1));
+  const int x0 = int(gx), y0 = int(gy);
+  const int x1 = std::min(x0 + 1, m.cols - 1), y1 = std::min(y0 + 1, m.rows - 1);
+  const float fx = gx - float(x0), fy = gy - float(y0);
+  const cv::Vec3f* r0 = m.ptr<cv::Vec3f>(y0);
+  const cv::Vec3f* r1 = m.ptr<cv::Vec3f>(y1);
+  return (r0[x0] * (1.0f - fx) + r0[x1] * fx) * (1.0f - fy) + (r1[x0] * (1.0f - fx) + r1[x1] * fx) * fy;
+}
+
+}  // namespace
+
 void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
   CV_Assert(image.type() == CV_32FC3 && level.type() == CV_32F && level.size() == image.size());
-  // Blur levels L_i (sigma_i), each from the previous with the missing
-  // variance; band i = L_(i-1) - L_i. Sum of kept bands plus the residual:
-  // out = L_n + sum_i [level > tau_i] (L_(i-1) - L_i)  (Jacobs et al. 2015 eq. 14).
-  std::vector<cv::Mat> blurred(size_t(params_.bands) + 1);
-  blurred[0] = image.clone();
-  double previous = 0.0;
-  for (int i = 0; i < params_.bands; ++i) {
-    const double extra = std::sqrt(std::max(sigmas_px_[size_t(i)] * sigmas_px_[size_t(i)] - previous * previous, 0.0));
-    previous = sigmas_px_[size_t(i)];
-    if (extra < 0.05)
-      blurred[size_t(i) + 1] = blurred[size_t(i)];
-    else
-      acuity_blur(blurred[size_t(i)], blurred[size_t(i) + 1], extra, params_.pyramid_from_px);
+  // Blur levels L_i of sigma_i (L_0 the image); band i = L_(i-1) - L_i is
+  // kept where level > tau_i (Jacobs et al. 2015 eq. 14):
+  //   out = L_n + sum_i [level > tau_i] (L_(i-1) - L_i).
+  // The thresholds fall with i (coarser bands need less light), so the kept
+  // bands are those from the first kept one, k, on, and the sum is L_k: each
+  // pixel takes one level. A level of sigma_i >= pyramid_from_px is held
+  // reduced by a power of two f (sigma_i / f >= pyramid_from_px / 2) and
+  // read bilinearly; its blur counts what the reductions (f^2 / 4 px^2 per
+  // halving) and the bilinear read (f^2 / 6) add, so every level's variance
+  // stays sigma_i^2.
+  const int n = params_.bands;
+  std::vector<cv::Mat> levels(size_t(n) + 1);
+  std::vector<int> factor(size_t(n) + 1, 1);
+  levels[0] = image;
+  double variance = 0.0;  // of the stored levels[i], full-resolution px^2
+  for (int i = 1; i <= n; ++i) {
+    const double sigma = sigmas_px_[size_t(i - 1)];
+    int f = factor[size_t(i - 1)];
+    const cv::Mat* from = &levels[size_t(i - 1)];
+    cv::Mat reduced;
+    if (params_.pyramid_from_px > 0 && sigma / (2 * f) >= params_.pyramid_from_px / 2 && from->cols >= 16 &&
+        from->rows >= 16) {
+      cv::resize(*from, reduced, cv::Size((from->cols + 1) / 2, (from->rows + 1) / 2), 0, 0, cv::INTER_AREA);
+      variance += f * f / 4.0;
+      f *= 2;
+      from = &reduced;
+    }
+    factor[size_t(i)] = f;
+    const double target = sigma * sigma - (f > 1 ? f * f / 6.0 : 0.0);
+    const double extra = std::sqrt(std::max(target - variance, 0.0)) / f;  // at the level's own resolution
+    if (extra < 0.05) {
+      levels[size_t(i)] = from == &reduced ? reduced : from->clone();
+    } else {
+      cv::GaussianBlur(*from, levels[size_t(i)], cv::Size(0, 0), extra, extra, cv::BORDER_REPLICATE);
+      variance = std::max(variance, target);
+    }
   }
-  const int bands = params_.bands;
   std::vector<float> tau(tau_.begin(), tau_.end());
   cv::parallel_for_(cv::Range(0, image.rows), [&](const cv::Range& rows) {
     for (int y = rows.start; y < rows.end; ++y) {
       const float* lv = level.ptr<float>(y);
       cv::Vec3f* out = image.ptr<cv::Vec3f>(y);
       for (int x = 0; x < image.cols; ++x) {
-        cv::Vec3f sum = blurred[size_t(bands)].ptr<cv::Vec3f>(y)[x];
-        for (int i = 0; i < bands; ++i) {
-          if (lv[x] > tau[i]) sum += blurred[size_t(i)].ptr<cv::Vec3f>(y)[x] - blurred[size_t(i) + 1].ptr<cv::Vec3f>(y)[x];
-        }
-        out[x] = sum;
+        int k = 0;  // the first kept band (n: none kept)
+        while (k < n && !(lv[x] > tau[size_t(k)])) ++k;
+        if (k > 0) out[x] = sample(levels[size_t(k)], factor[size_t(k)], x, y);
       }
     }
   });

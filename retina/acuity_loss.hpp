@@ -28,10 +28,10 @@ struct AcuityParams {
   // (acuity_loss.cpp; tuned with the stochastic thresholds, which keep finer
   // bands in places).
   double band_margin = 1.8;
-  // Blurs wider than this many pixels run on the image reduced by a power
-  // of two (at least 3 px of blur left there) and are enlarged back: the
-  // coarse bands are smooth, so little is lost (quality presets); 0: every
-  // blur at full resolution (reference).
+  // Blur levels this many pixels wide or wider are held reduced by a power
+  // of two (at least half this many pixels of blur left there) and read
+  // bilinearly: the coarse bands are smooth, so little is lost (quality
+  // presets); 0: every level at full resolution (reference).
   double pyramid_from_px = 0.0;
 };
 
