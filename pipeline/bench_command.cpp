@@ -7,6 +7,7 @@
 #include "io/error.hpp"
 #include "io/staged_file.hpp"
 #include "pipeline/quality_presets.hpp"
+#include "samples/scene.hpp"
 
 namespace eyestream::pipeline {
 
@@ -88,12 +89,19 @@ std::vector<BenchRow> run_bench(const BenchRequest& q) {
   if (sizes.empty() || presets.empty()) throw UsageError("--sizes and --presets need at least one entry");
   for (const std::string& p : presets) preset_settings(p, true);  // names checked before any work
   for (const std::string& s : sizes) parse_frame_size(s);
+  const std::vector<std::string> scenes = split(q.scene);
+  if (scenes.empty()) throw UsageError("--scene needs at least one scene");
+  for (const std::string& name : scenes) samples::find_scene(name);  // names checked before any work
   std::vector<BenchRow> rows;
+  for (const std::string& name : scenes)
+    for (const std::string& size : sizes) {
+      const cv::Size wh = parse_frame_size(size);
+      presets_on(load_bench_scene(name, wh.width, wh.height, q.frames), size, presets, rows);
+    }
   for (const std::string& size : sizes) {
     const cv::Size wh = parse_frame_size(size);
-    const BenchScene scene = load_bench_scene(q.scene, wh.width, wh.height, q.frames);
-    presets_on(scene, size, presets, rows);
     if (q.skip_study && &size == &sizes.front()) {
+      const BenchScene scene = load_bench_scene(scenes.front(), wh.width, wh.height, q.frames);
       // A dim still frame: the headlights scene with its lamps at half the
       // display peak, so nothing needs glare and the retina rests.
       const BenchScene dim = load_bench_scene("headlights", wh.width, wh.height, q.frames, 50.0);

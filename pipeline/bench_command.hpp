@@ -11,7 +11,7 @@
 namespace eyestream::pipeline {
 
 struct BenchRequest {
-  std::string scene = "night-drive";  // the scene that needs every stage
+  std::string scene = "night-drive,night-city";  // scenes that need every stage, comma-separated
   std::string sizes = "720p,1080p";   // 720p, 1080p, 4k or WxH, comma-separated
   std::string presets = "reference,balanced,fast";
   int frames = 8;

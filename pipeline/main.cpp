@@ -152,7 +152,7 @@ int main(int argc, char** argv) {
   int bench_threads = 0;
   CLI::App* bench_cmd = app.add_subcommand(
       "bench", "time each quality preset per stage on a built-in scene and measure its error against reference");
-  bench_cmd->add_option("--scene", bench.scene, "built-in scene (one that needs every stage)")->capture_default_str();
+  bench_cmd->add_option("--scene", bench.scene, "built-in scenes, comma-separated (the skip study uses the first)")->capture_default_str();
   bench_cmd->add_option("--sizes", bench.sizes, "frame sizes: 720p, 1080p, 4k or WxH, comma-separated")
       ->capture_default_str();
   bench_cmd->add_option("--presets", bench.presets, "presets, comma-separated (reference first: the yardstick)")

@@ -120,8 +120,7 @@ bool RetinaStage::composite(const cv::Mat& tone_mapped, double gaze_x, double ga
   const cv::Mat gain = grid_.draw(maps.gain_excess, gaze_x, gaze_y, cv::Scalar::all(0.0));
   const cv::Mat bleach = grid_.draw(maps.bleach, gaze_x, gaze_y, cv::Scalar::all(0.0));
   retina::composite_afterimages(tone_mapped, gain, bleach, out);
-  const double largest = std::max(cv::norm(maps.gain_excess, cv::NORM_INF), cv::norm(maps.bleach, cv::NORM_INF));
-  resting_ = largest <= kRestTolerance;
+  resting_ = maps.largest <= kRestTolerance;
   return true;
 }
 

@@ -28,6 +28,9 @@ class PowTable {
     return table_[i] + f * (table_[i + 1] - table_[i]);
   }
 
+  // x^p for any x >= 0: above 1 as 1 / (1/x)^p.
+  float any(float x) const { return x <= 1.0f ? (*this)(x) : 1.0f / (*this)(1.0f / x); }
+
  private:
   static constexpr int kOctaves = 40, kSteps = 1024;
   double exponent_;

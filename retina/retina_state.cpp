@@ -1,9 +1,12 @@
 #include "retina/retina_state.hpp"
 
 #include "retina/diffusion.hpp"
+#include "retina/pow_table.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
+#include <vector>
 
 namespace eyestream::retina {
 
@@ -67,8 +70,13 @@ void afterimage_sites(const PhotoreceptorParams& p, double c_max, const Afterima
                       const cv::Mat& visibility, AfterimageMaps& maps) {
   maps.gain_excess.create(bleached.size(), CV_32FC3);
   maps.bleach.create(bleached.size(), CV_32FC3);
+  // alpha^j2 by table in float: 2e-7 relative (pow_table.hpp), far below
+  // what a display shows of a gain.
+  const PowTable& power = shared_pow_table(p.adaptation_strength);
+  std::vector<float> row_largest(size_t(bleached.rows), 0.0f);
   cv::parallel_for_(cv::Range(0, bleached.rows), [&](const cv::Range& rows) {
     for (int y = rows.start; y < rows.end; ++y) {
+      float largest = 0.0f;
       const Px<T>* b = bleached.ptr<Px<T>>(y);
       const Px<T>* d = deficit.ptr<Px<T>>(y);
       const Px<T>* b_inf = bleached_rest.ptr<Px<T>>(y);
@@ -80,14 +88,17 @@ void afterimage_sites(const PhotoreceptorParams& p, double c_max, const Afterima
         for (int c = 0; c < 3; ++c) {
           double g = 1.0, j = 0.0;
           if (o.local_adaptation)  // Jacobs et al. 2015 eqs. 11-12: alpha^j2
-            g = std::pow(double(local_gain<T>(d[x][c], r[x][c], T(c_max), T(p.gain_epsilon))), p.adaptation_strength);
+            g = power.any(float(local_gain<T>(d[x][c], r[x][c], T(c_max), T(p.gain_epsilon))));
           if (o.bleaching)  // Jacobs et al. 2015 eq. 12: j1 (C / C_max) max(B - B_inf, 0)
             j = p.bleaching_strength * (1.0 - double(d[x][c]) / c_max) * std::max(double(b[x][c] - b_inf[x][c]), 0.0);
           gain[x][c] = float(visible[x] * (g - 1.0));
           bleach[x][c] = float(visible[x] * j);
+          largest = std::max({largest, std::abs(gain[x][c]), std::abs(bleach[x][c])});
         }
+      row_largest[size_t(y)] = largest;
     }
   });
+  for (float v : row_largest) maps.largest = std::max(maps.largest, v);
 }
 
 bool is_double(const cv::Mat& m) { return m.depth() == CV_64F; }

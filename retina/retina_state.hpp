@@ -23,6 +23,7 @@ struct AfterimageOptions {
 struct AfterimageMaps {
   cv::Mat gain_excess;
   cv::Mat bleach;
+  float largest = 0.0f;  // the largest |value| in either map
 };
 
 class RetinaState {

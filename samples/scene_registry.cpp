@@ -4,6 +4,7 @@
 #include "samples/flash.hpp"
 #include "samples/headlights.hpp"
 #include "samples/night_drive.hpp"
+#include "samples/night_city.hpp"
 #include "samples/night_drive_long.hpp"
 #include "samples/scene.hpp"
 
@@ -20,6 +21,11 @@ const std::vector<Scene>& scenes() {
        "to 35 lx), a pedestrian on the verge (target masks in DIR/target), the gaze moving between road, pedestrian "
        "and headlights with five blinks",
        kNightDriveLongDuration_s, generate_night_drive_long},
+      {"night-city",
+       "a city street at night: lit windows, neon signs, sodium and LED street lamps (3e4-4e4 cd/m^2), traffic "
+       "signals and two cars' headlights and tail lights, hundreds of lights above a display's peak; the gaze "
+       "wanders in fixations and saccades, with a blink",
+       kNightCityDuration_s, generate_night_city},
       {"flash",
        "a 1/8 s neutral flash (--luminance, default 1e7 cd/m^2) of 2 deg radius on black at 0.5 s, then darkness; "
        "gaze fixed on it: bleaching afterimages and the flight of colours",
