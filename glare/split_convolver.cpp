@@ -22,7 +22,7 @@ std::vector<cv::Mat*> components(ComponentKernels& k) {
 }
 
 // Multiplies `kernel` (centred) by window(r * pixel_scale), or by
-// 1 - window when `complement`.
+// 1 - window when `complement`; r in the kernel's pixels.
 void apply_window(cv::Mat& kernel, double pixel_scale, double radius, bool complement) {
   const double cx = kernel.cols / 2, cy = kernel.rows / 2;
   for (int y = 0; y < kernel.rows; ++y) {
@@ -34,6 +34,32 @@ void apply_window(cv::Mat& kernel, double pixel_scale, double radius, bool compl
   }
 }
 
+// Multiplies `kernel` (centred) by window(r, outer) - window(r, inner),
+// r = the distance in full-resolution pixels (pixel_scale per kernel pixel).
+void apply_band(cv::Mat& kernel, double pixel_scale, double inner, double outer) {
+  const double cx = kernel.cols / 2, cy = kernel.rows / 2;
+  for (int y = 0; y < kernel.rows; ++y) {
+    double* row = kernel.ptr<double>(y);
+    for (int x = 0; x < kernel.cols; ++x) {
+      const double r = std::hypot(x - cx, y - cy) * pixel_scale;
+      row[x] *= near_window(r, outer) - near_window(r, inner);
+    }
+  }
+}
+
+// `m` (energies per block of a level) enlarged by `by` to `size`, as
+// energies per pixel of that size: bilinear, then each channel scaled so
+// its total is kept.
+cv::Mat enlarge_keeping_energy(const cv::Mat& m, int by, cv::Size size) {
+  cv::Mat up;
+  cv::resize(m * (1.0 / (double(by) * by)), up, size, 0, 0, cv::INTER_LINEAR);
+  const cv::Scalar want = cv::sum(m), got = cv::sum(up);
+  cv::Scalar scale;
+  for (int c = 0; c < 3; ++c) scale[c] = got[c] > 0 ? want[c] / got[c] : 0.0;
+  cv::multiply(up, scale, up);
+  return up;
+}
+
 struct Source {
   int x, y;
   cv::Vec3f value;
@@ -43,25 +69,34 @@ struct Source {
 
 SplitConvolver::SplitConvolver(int width, int height, double ppd, int factor, const EyeOptics& optics)
     : width_(width), height_(height), factor_(std::max(factor, 2)), radius_(8 * factor_) {
-  low_width_ = (width + factor_ - 1) / factor_;
-  low_height_ = (height + factor_ - 1) / factor_;
+  const int f1 = factor_, f2 = 4 * factor_;
+  const int padded_w = (width + f2 - 1) / f2 * f2, padded_h = (height + f2 - 1) / f2 * f2;
+  const double r0 = radius_, r1 = 16.0 * f2;  // window radii in full-resolution pixels
   near_ = build_component_kernels(radius_ + 1, radius_ + 1, ppd, optics);
-  ComponentKernels far = build_component_kernels(low_width_, low_height_, ppd / factor_, optics);
-  std::vector<cv::Mat*> n = components(near_), f = components(far);
-  for (size_t i = 0; i < n.size(); ++i) {
-    apply_window(*n[i], 1.0, radius_, false);
-    apply_window(*f[i], factor_, radius_, true);
-  }
-  far_ = std::make_unique<FftConvolver>(far);
+  for (cv::Mat* k : components(near_)) apply_window(*k, 1.0, r0, false);
   near_fft_ = std::make_unique<FftConvolver>(near_, width, height);
+  // Middle: K (w_1 - w_0), reaching R_1 / f1 of its pixels.
+  const int reach = int(std::ceil(r1 / f1));
+  ComponentKernels middle = build_component_kernels(reach + 1, reach + 1, ppd / f1, optics);
+  for (cv::Mat* k : components(middle)) apply_band(*k, f1, r0, r1);
+  // Tail: K (1 - w_1), the whole frame's reach.
+  ComponentKernels tail = build_component_kernels(padded_w / f2, padded_h / f2, ppd / f2, optics);
+  for (cv::Mat* k : components(tail)) apply_window(*k, f2, r1, true);
+  coarse_.resize(2);
+  coarse_[0].factor = f1;
+  coarse_[0].size = {padded_w / f1, padded_h / f1};
+  coarse_[0].engine = std::make_unique<FftConvolver>(middle, padded_w / f1, padded_h / f1);
+  coarse_[1].factor = f2;
+  coarse_[1].size = {padded_w / f2, padded_h / f2};
+  coarse_[1].engine = std::make_unique<FftConvolver>(tail);
 }
 
 SplitConvolver::~SplitConvolver() = default;
 
 cv::Mat SplitConvolver::convolve(const cv::Mat& rgb, const PsfWeights& w) const {
   CV_Assert(rgb.cols == width_ && rgb.rows == height_ && rgb.type() == CV_32FC3);
-  cv::Mat out = spread_near(rgb, w) + spread_far(rgb, w);
-  cv::max(out, 0.0, out);
+  cv::Mat out = spread_near(rgb, w);
+  add_coarse(rgb, w, out);
   return out;
 }
 
@@ -105,23 +140,39 @@ cv::Mat SplitConvolver::spread_near(const cv::Mat& rgb, const PsfWeights& w) con
   return out;
 }
 
-cv::Mat SplitConvolver::spread_far(const cv::Mat& rgb, const PsfWeights& w) const {
-  // Block sums of the input on the reduced frame (zero-padded to whole blocks).
-  cv::Mat padded;
-  cv::copyMakeBorder(rgb, padded, 0, low_height_ * factor_ - height_, 0, low_width_ * factor_ - width_,
-                     cv::BORDER_CONSTANT, cv::Scalar::all(0));
-  cv::Mat low;
-  cv::resize(padded, low, cv::Size(low_width_, low_height_), 0, 0, cv::INTER_AREA);
-  low *= double(factor_) * factor_;
-  const cv::Mat spread = far_->convolve(low, w);  // energy landing on each block
-  // Back to full resolution as a density, keeping each channel's energy.
+void SplitConvolver::add_coarse(const cv::Mat& rgb, const PsfWeights& w, cv::Mat& out) const {
+  const Level& middle = coarse_[0];
+  const Level& tail = coarse_[1];
+  // Block sums of the input at each level (zero-padded to whole tail blocks).
+  const cv::Size padded_size(middle.size.width * middle.factor, middle.size.height * middle.factor);
+  cv::Mat padded = rgb;
+  if (padded_size != rgb.size())
+    cv::copyMakeBorder(rgb, padded, 0, padded_size.height - height_, 0, padded_size.width - width_,
+                       cv::BORDER_CONSTANT, cv::Scalar::all(0));
+  cv::Mat mid_in, tail_in;
+  cv::resize(padded, mid_in, middle.size, 0, 0, cv::INTER_AREA);
+  mid_in *= double(middle.factor) * middle.factor;
+  cv::resize(mid_in, tail_in, tail.size, 0, 0, cv::INTER_AREA);
+  const int step = tail.factor / middle.factor;
+  tail_in *= double(step) * step;
+  // The energy landing on each block, the tail's brought to the middle's
+  // blocks, then both to the frame's pixels, each channel's total kept.
+  cv::Mat landed = middle.engine->convolve(mid_in, w);
+  landed += enlarge_keeping_energy(tail.engine->convolve(tail_in, w), step, middle.size);
   cv::Mat up;
-  cv::resize(spread * (1.0 / (double(factor_) * factor_)), up, padded.size(), 0, 0, cv::INTER_LINEAR);
-  const cv::Scalar want = cv::sum(spread), got = cv::sum(up);
-  cv::Scalar scale;
-  for (int c = 0; c < 3; ++c) scale[c] = got[c] > 0 ? want[c] / got[c] : 0.0;
-  cv::multiply(up, scale, up);
-  return up(cv::Rect(0, 0, width_, height_)).clone();
+  cv::resize(landed * (1.0 / (double(middle.factor) * middle.factor)), up, padded_size, 0, 0, cv::INTER_LINEAR);
+  const cv::Scalar want = cv::sum(landed), got = cv::sum(up);
+  float scale[3];
+  for (int c = 0; c < 3; ++c) scale[c] = got[c] > 0 ? float(want[c] / got[c]) : 0.0f;
+  // out = max(near + coarse, 0): rounding residue never goes negative.
+  cv::parallel_for_(cv::Range(0, height_), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      cv::Vec3f* o = out.ptr<cv::Vec3f>(y);
+      const cv::Vec3f* u = up.ptr<cv::Vec3f>(y);
+      for (int x = 0; x < width_; ++x)
+        for (int c = 0; c < 3; ++c) o[x][c] = std::max(o[x][c] + u[x][c] * scale[c], 0.0f);
+    }
+  });
 }
 
 }  // namespace eyestream::glare

@@ -1,19 +1,24 @@
 // The split glare engine: the PSF's sharp centre at full resolution, its
-// smooth wide tail at reduced resolution (MODEL.md 1.3). With the window
-// w(r) = 1 within R/2 pixels of the source, falling linearly to 0 at R:
-//   K = K w            (near: full resolution, (2R+1)^2 pixels)
-//     + K (1 - w)      (far: kernels integrated over factor x factor pixel
-//                       footprints, on a frame reduced by that factor).
-// The window is applied at pixel centres (near) and block centres (far),
-// so near + far hold the undivided kernel's energy to within 0.05 %
-// (tests/split_engine_test.cpp); the upsampled tail keeps its block
-// energies, so the engine moves light without adding any. Near sources are scattered
-// directly when the input is sparse (the excess over the display peak
-// usually is), else by an FFT padded by R.
+// smoother parts at reduced resolutions (MODEL.md 1.3). Level l runs at a
+// reduction f_l (1, then `factor`, then 4 factor); with the windows
+// w_l(r) = 1 within R_l / 2 pixels of the source, falling linearly to 0 at
+// R_l = 8 f_(l+1) (where the next level's pixels are small against the
+// PSF's change), level l holds K (w_l - w_(l-1)), integrated over its
+// f_l x f_l pixel footprints, and the last level holds K (1 - w_(l-1)):
+//   near   (full resolution, R_0 = 8 factor pixels),
+//   middle (1/factor, out to R_1 = 32 factor pixels, padded by that reach),
+//   tail   (1/(4 factor), the whole frame's reach).
+// The windows are applied at pixel centres (near) and block centres, so the
+// levels together hold the undivided kernel's energy to within 0.05 %
+// (tests/split_engine_test.cpp); each coarse level is enlarged keeping its
+// block energies, so the engine moves light without adding any. Near
+// sources are scattered directly when the input is sparse (the excess over
+// the display peak usually is), else by an FFT padded by R_0.
 #pragma once
 
 #include <memory>
 #include <opencv2/core.hpp>
+#include <vector>
 
 #include "glare/fft_convolver.hpp"
 #include "glare/psf_kernel.hpp"
@@ -23,7 +28,7 @@ namespace eyestream::glare {
 class SplitConvolver {
  public:
   // For width x height frames at pixels_per_degree; `factor` >= 2 is the
-  // tail's reduction, R = 8 factor pixels.
+  // middle level's reduction, R_0 = 8 factor pixels.
   SplitConvolver(int width, int height, double pixels_per_degree, int factor, const EyeOptics& optics = EyeOptics());
   ~SplitConvolver();
 
@@ -34,13 +39,20 @@ class SplitConvolver {
   int near_radius() const { return radius_; }
 
  private:
+  struct Level {
+    int factor = 1;          // reduction against the frame
+    cv::Size size;           // the frame at this level, padded to whole coarsest blocks
+    std::unique_ptr<FftConvolver> engine;
+  };
   cv::Mat spread_near(const cv::Mat& rgb, const PsfWeights& w) const;
-  cv::Mat spread_far(const cv::Mat& rgb, const PsfWeights& w) const;
+  // Adds the coarse levels' spread light to `out` (the near part), and
+  // sets what rounding left negative to 0.
+  void add_coarse(const cv::Mat& rgb, const PsfWeights& w, cv::Mat& out) const;
 
-  int width_, height_, factor_, radius_, low_width_, low_height_;
+  int width_, height_, factor_, radius_;
   ComponentKernels near_;  // windowed, (2R+1) x (2R+1)
-  std::unique_ptr<FftConvolver> far_;       // the tail
   std::unique_ptr<FftConvolver> near_fft_;  // the near part of a dense frame
+  std::vector<Level> coarse_;  // middle, tail
 };
 
 }  // namespace eyestream::glare

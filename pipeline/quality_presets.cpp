@@ -20,7 +20,7 @@ void apply_quality_preset(const std::string& name, Settings& s) {
     s.psf_model = "vos";
     s.glare_engine = "split";
     s.glare_tail_factor = 2;
-    s.acuity.pyramid_from_px = 12.0;
+    s.acuity.pyramid_from_px = 6.0;
     s.sink.video.preset = "faster";
   } else if (name == "fast") {
     s.precision = "float";
@@ -29,7 +29,7 @@ void apply_quality_preset(const std::string& name, Settings& s) {
     s.psf_model = "vos";
     s.glare_engine = "split";
     s.glare_tail_factor = 4;
-    s.acuity.pyramid_from_px = 6.0;
+    s.acuity.pyramid_from_px = 3.0;
     s.sink.video.preset = "veryfast";
   } else {
     throw UsageError("--quality: '" + name + "' is not one of reference|balanced|fast");

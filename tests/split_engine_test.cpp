@@ -71,7 +71,7 @@ TEST(SplitEngine, WithFlareLinesItStillMovesLightWithoutAddingAny) {
 }
 
 TEST(SplitEngine, DenseAndSparseInputsTakeTheirPathsAndAgree) {
-  // A dense image goes through the filter path; its energy matches the
+  // A dense image goes through the FFT path; its energy matches the
   // exact engine's as well.
   cv::Mat dense(kH, kW, CV_32FC3);
   cv::randu(dense, 0.0, 1000.0);
@@ -81,11 +81,13 @@ TEST(SplitEngine, DenseAndSparseInputsTakeTheirPathsAndAgree) {
 }
 
 // Stated error on the headlights scene: the spread excess differs from the
-// exact engine's by at most 2 % of the exact value plus 0.5 cd/m^2 (tail
+// exact engine's by at most 2 % of the exact value plus 0.5 cd/m^2 (middle
 // factor 2) or 5 % plus 1 cd/m^2 (factor 4) at every pixel, on a 640x360
-// frame (measured: 85 % of the factor-2 bound; 102 % of 4 % plus 1 cd/m^2
-// at factor 4). The largest errors lie 8-32 px from the lamps, where the
-// near window hands over to the tail.
+// frame (measured with the three-level engine: 85 % of the factor-2 bound,
+// 93 % of the factor-4 one). With the tail at 4 times the middle's
+// reduction handing over at 8 f_tail pixels instead of 16, the factor-2
+// error was 2.1 times its bound: the tail's hand-over must lie where its
+// blocks are small against the PSF's change.
 // The largest |split - exact| / (relative exact + absolute) over every
 // pixel and channel: at most 1 when the split engine is within the bound.
 double worst_against(const cv::Mat& exact_image, const cv::Mat& split, double relative, double absolute) {
@@ -104,7 +106,9 @@ TEST(SplitEngine, HeadlightsRetinalImageWithinItsStatedErrorOfTheExactEngine) {
   const cv::Mat reference = exact().convolve(excess, night_weights());
   for (const auto& [factor, relative, absolute] : {std::tuple{2, 0.02, 0.5}, std::tuple{4, 0.05, 1.0}}) {
     const cv::Mat split = SplitConvolver(kW, kH, kPpd, factor).convolve(excess, night_weights());
-    EXPECT_LE(worst_against(reference, split, relative, absolute), 1.0) << "factor " << factor;
+    const double worst = worst_against(reference, split, relative, absolute);
+    std::cout << "factor " << factor << ": " << worst << " of the bound\n";
+    EXPECT_LE(worst, 1.0) << "factor " << factor;
   }
 }
 
