@@ -8,6 +8,8 @@ namespace eyestream::glare {
 
 namespace {
 
+constexpr double kHaloOuterDeg = 4.5;  // Spencer et al. 1995: the halo ring's outer edge
+
 // The near window w(r) for r in full-resolution pixels.
 double near_window(double r, double radius) {
   const double inner = radius / 2.0;
@@ -71,7 +73,10 @@ SplitConvolver::SplitConvolver(int width, int height, double ppd, int factor, co
     : width_(width), height_(height), factor_(std::max(factor, 2)), radius_(8 * factor_) {
   const int f1 = factor_, f2 = 4 * factor_;
   const int padded_w = (width + f2 - 1) / f2 * f2, padded_h = (height + f2 - 1) / f2 * f2;
-  const double r0 = radius_, r1 = 16.0 * f2;  // window radii in full-resolution pixels
+  // Window radii in full-resolution pixels. The tail starts beyond the
+  // lenticular halo (rings up to 4.5 deg, coloured at a scale its blocks
+  // would blur) and where its blocks are small against the PSF's change.
+  const double r0 = radius_, r1 = std::max(16.0 * f2, 2.0 * kHaloOuterDeg * ppd);
   near_ = build_component_kernels(radius_ + 1, radius_ + 1, ppd, optics);
   for (cv::Mat* k : components(near_)) apply_window(*k, 1.0, r0, false);
   near_fft_ = std::make_unique<FftConvolver>(near_, width, height);

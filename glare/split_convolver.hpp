@@ -2,12 +2,16 @@
 // smoother parts at reduced resolutions (MODEL.md 1.3). Level l runs at a
 // reduction f_l (1, then `factor`, then 4 factor); with the windows
 // w_l(r) = 1 within R_l / 2 pixels of the source, falling linearly to 0 at
-// R_l = 8 f_(l+1) (where the next level's pixels are small against the
-// PSF's change), level l holds K (w_l - w_(l-1)), integrated over its
-// f_l x f_l pixel footprints, and the last level holds K (1 - w_(l-1)):
+// R_l, level l holds K (w_l - w_(l-1)), integrated over its f_l x f_l
+// pixel footprints, and the last level holds K (1 - w_(l-1)):
 //   near   (full resolution, R_0 = 8 factor pixels),
-//   middle (1/factor, out to R_1 = 32 factor pixels, padded by that reach),
+//   middle (1/factor, out to R_1 = the larger of 64 factor pixels and 9 deg,
+//           padded by that reach),
 //   tail   (1/(4 factor), the whole frame's reach).
+// A level takes over where its blocks are small against the PSF's change
+// (R_0 = 8 f_middle; 16 f_tail, as 8 f_tail cost twice the stated error),
+// and the tail only beyond the lenticular halo (rings to 4.5 deg, whose
+// colour order its blocks would repaint: tests/split_engine_test.cpp).
 // The windows are applied at pixel centres (near) and block centres, so the
 // levels together hold the undivided kernel's energy to within 0.05 %
 // (tests/split_engine_test.cpp); each coarse level is enlarged keeping its
