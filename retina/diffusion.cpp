@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
+#include <vector>
 
 namespace eyestream::retina {
 
@@ -20,6 +21,79 @@ void diffuse(cv::Mat& m, double variance) {
   const double v = variance / passes;
   const cv::Mat k = (cv::Mat_<double>(3, 1) << v / 2, 1.0 - v, v / 2);
   for (int i = 0; i < passes; ++i) cv::sepFilter2D(m, m, -1, k, k, cv::Point(-1, -1), 0.0, cv::BORDER_REPLICATE);
+}
+
+namespace {
+
+// One three-tap pass [a, 1 - 2a, a] each way over the departure. The
+// horizontal sweep reads `from` (the departure, or the state less the rest
+// on the first pass) into `across`; the vertical sweep writes the next
+// departure, or on the last pass the clamped state.
+template <typename T>
+void departure_pass(cv::Mat& state, const cv::Mat& rest, T k, const cv::Mat* departure, cv::Mat& across,
+                    cv::Mat& next, T a, bool last, T hi) {
+  const int rows = state.rows, n = state.cols * 3;
+  const T centre = T(1) - 2 * a;
+  cv::parallel_for_(cv::Range(0, rows), [&](const cv::Range& r) {
+    std::vector<T> d(size_t(n) + 6);
+    for (int y = r.start; y < r.end; ++y) {
+      const T* s = departure ? departure->ptr<T>(y) : state.ptr<T>(y);
+      const T* b = rest.ptr<T>(y);
+      for (int i = 0; i < n; ++i) d[size_t(i) + 3] = departure ? s[i] : s[i] - k * b[i];
+      for (int c = 0; c < 3; ++c) d[size_t(c)] = d[size_t(c) + 3], d[size_t(n + 3 + c)] = d[size_t(n + c)];
+      T* o = across.ptr<T>(y);
+      for (int i = 0; i < n; ++i) o[i] = a * d[size_t(i)] + centre * d[size_t(i) + 3] + a * d[size_t(i) + 6];
+    }
+  });
+  cv::parallel_for_(cv::Range(0, rows), [&](const cv::Range& r) {
+    for (int y = r.start; y < r.end; ++y) {
+      const T* up = across.ptr<T>(std::max(y - 1, 0));
+      const T* mid = across.ptr<T>(y);
+      const T* down = across.ptr<T>(std::min(y + 1, rows - 1));
+      if (last) {
+        T* o = state.ptr<T>(y);
+        const T* b = rest.ptr<T>(y);
+        for (int i = 0; i < n; ++i)
+          o[i] = std::clamp(k * b[i] + a * up[i] + centre * mid[i] + a * down[i], T(0), hi);
+      } else {
+        T* o = next.ptr<T>(y);
+        for (int i = 0; i < n; ++i) o[i] = a * up[i] + centre * mid[i] + a * down[i];
+      }
+    }
+  });
+}
+
+template <typename T>
+void diffuse_departure_as(cv::Mat& state, const cv::Mat& rest, double rest_scale, double variance, double hi) {
+  const int passes = int(std::ceil(variance / 0.5));
+  const T a = T(variance / passes / 2);
+  cv::Mat across(state.size(), state.type()), departure[2];
+  for (int p = 0; p < passes; ++p) {
+    const cv::Mat* from = p == 0 ? nullptr : &departure[(p - 1) % 2];
+    if (p + 1 < passes) departure[p % 2].create(state.size(), state.type());
+    departure_pass<T>(state, rest, T(rest_scale), from, across, departure[p % 2], a, p + 1 == passes, T(hi));
+  }
+}
+
+}  // namespace
+
+void diffuse_departure(cv::Mat& state, const cv::Mat& rest, double rest_scale, double variance, double hi) {
+  CV_Assert(state.size() == rest.size() && state.type() == rest.type() &&
+            (state.type() == CV_32FC3 || state.type() == CV_64FC3));
+  if (!(variance > 0.0)) return;
+  variance = std::min(variance, double(state.rows) * state.rows + double(state.cols) * state.cols);
+  if (variance > 4.0) {  // a Gaussian, as diffuse()
+    cv::Mat d = state - rest * rest_scale;
+    diffuse(d, variance);
+    state = rest * rest_scale + d;
+    cv::max(state, 0.0, state);
+    cv::min(state, hi, state);
+    return;
+  }
+  if (state.depth() == CV_64F)
+    diffuse_departure_as<double>(state, rest, rest_scale, variance, hi);
+  else
+    diffuse_departure_as<float>(state, rest, rest_scale, variance, hi);
 }
 
 }  // namespace eyestream::retina

@@ -18,4 +18,10 @@ namespace eyestream::retina {
 // grid's squared diagonal is taken as that (the blur is uniform by then).
 void diffuse(cv::Mat& m, double variance_sites2);
 
+// state = clamp(rest_scale rest + diffuse(state - rest_scale rest), 0, hi),
+// the departure from rest spread by `variance_sites2` as diffuse() does,
+// in two fused sweeps per three-tap pass (no temporary departure image);
+// CV_32FC3 or CV_64FC3. Beyond 4 sites^2, by diffuse() itself.
+void diffuse_departure(cv::Mat& state, const cv::Mat& rest, double rest_scale, double variance_sites2, double hi);
+
 }  // namespace eyestream::retina

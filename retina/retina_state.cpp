@@ -42,19 +42,27 @@ void equilibrium(const cv::Mat& lms, const ToneCurve& curve, const Photoreceptor
   });
 }
 
+// One time step of every site, with the equilibrium it relaxes toward
+// (b_inf, response) written on the way: one sweep.
 template <typename T>
-void step_sites(const cv::Mat& lms, const cv::Mat& response, const PhotoreceptorParams& p, double c_max, double dt,
-                cv::Mat& bleached, cv::Mat& deficit) {
+void step_sites(const cv::Mat& lms, const ToneCurve& curve, const PhotoreceptorParams& p, double c_max, double dt,
+                cv::Mat& b_inf, cv::Mat& response, cv::Mat& bleached, cv::Mat& deficit) {
+  b_inf.create(lms.size(), lms.type());
+  response.create(lms.size(), lms.type());
   const T decay = std::exp(-T(p.calcium_efflux_per_s) * T(dt));
   cv::parallel_for_(cv::Range(0, lms.rows), [&](const cv::Range& rows) {
     for (int y = rows.start; y < rows.end; ++y) {
       const Px<T>* s = lms.ptr<Px<T>>(y);
-      const Px<T>* r = response.ptr<Px<T>>(y);
+      Px<T>* rest = b_inf.ptr<Px<T>>(y);
+      Px<T>* r = response.ptr<Px<T>>(y);
       Px<T>* b = bleached.ptr<Px<T>>(y);
       Px<T>* d = deficit.ptr<Px<T>>(y);
       for (int x = 0; x < lms.cols; ++x)
         for (int c = 0; c < 3; ++c) {
           const T i = stimulus(s[x][c]);
+          // Jacobs et al. 2015 eqs. 6 and 1.
+          rest[x][c] = bleach_equilibrium<T>(i, T(p.bleach_rate[c]), T(p.regen_rate_per_s[c]));
+          r[x][c] = T(curve.response(float(i)));
           b[x][c] =
               std::clamp(bleach_step<T>(b[x][c], i, T(dt), T(p.bleach_rate[c]), T(p.regen_rate_per_s[c])), T(0), T(1));
           const T d_inf = T(c_max) * r[x][c];  // Jacobs et al. 2015 eq. 10 as a deficit
@@ -124,28 +132,23 @@ void RetinaState::rest(const cv::Mat& lms, const ToneCurve& curve) {
 
 void RetinaState::step(const cv::Mat& lms, const ToneCurve& curve, double dt_s) {
   CV_Assert(lms.size() == bleached_.size() && lms.type() == bleached_.type());
+  if (!(dt_s > 0)) {
+    if (is_double(lms))
+      equilibrium<double>(lms, curve, params_, bleached_rest_, response_);
+    else
+      equilibrium<float>(lms, curve, params_, bleached_rest_, response_);
+    return;
+  }
   if (is_double(lms))
-    equilibrium<double>(lms, curve, params_, bleached_rest_, response_);
+    step_sites<double>(lms, curve, params_, c_max_, dt_s, bleached_rest_, response_, bleached_, deficit_);
   else
-    equilibrium<float>(lms, curve, params_, bleached_rest_, response_);
-  if (!(dt_s > 0)) return;
-  if (is_double(lms))
-    step_sites<double>(lms, response_, params_, c_max_, dt_s, bleached_, deficit_);
-  else
-    step_sites<float>(lms, response_, params_, c_max_, dt_s, bleached_, deficit_);
+    step_sites<float>(lms, curve, params_, c_max_, dt_s, bleached_rest_, response_, bleached_, deficit_);
 }
 
 void RetinaState::soften(double variance_sites2) {
   if (!(variance_sites2 > 0.0) || response_.empty()) return;
-  auto soften_one = [&](cv::Mat& state, const cv::Mat& rest, double hi) {
-    cv::Mat departure = state - rest;
-    diffuse(departure, variance_sites2);
-    state = rest + departure;
-    cv::max(state, 0.0, state);
-    cv::min(state, hi, state);
-  };
-  soften_one(bleached_, bleached_rest_, 1.0);
-  soften_one(deficit_, response_ * c_max_, c_max_);
+  diffuse_departure(bleached_, bleached_rest_, 1.0, variance_sites2, 1.0);
+  diffuse_departure(deficit_, response_, c_max_, variance_sites2, c_max_);
 }
 
 AfterimageMaps RetinaState::afterimages(const AfterimageOptions& options, const cv::Mat& visibility) const {
