@@ -58,12 +58,12 @@ RetinaStage::RetinaStage(const Plan& plan)
 
 void RetinaStage::advance(const cv::Mat& rgb, const std::vector<GazeSegment>& segments,
                           const std::vector<double>& adaptation_log, double surround_cd_m2) {
-  const cv::Mat lms = retina::to_cone_stimulus(rgb, plan_.retina.double_precision ? CV_64F : CV_32F);
+  const cv::Mat lms = grid_.reduce(retina::to_cone_stimulus(rgb, plan_.retina.double_precision ? CV_64F : CV_32F));
   const cv::Scalar surround = cv::Scalar::all(surround_cd_m2);
   double frame_dt = 0.0;
   stepped_ = false;
   for (const StepGroup& g : group_segments(segments, plan_.retina.substep_tolerance_px)) {
-    const cv::Mat stimulus = g.closed ? dark_ : grid_.sample(lms, g.x, g.y, surround);
+    const cv::Mat stimulus = g.closed ? dark_ : grid_.sample_reduced(lms, g.x, g.y, surround);
     const double curve_log = adaptation_log[g.last];
     const retina::ToneCurve curve(curve_log, plan_.tone);
     if (!started_) {

@@ -13,17 +13,19 @@ RetinalGrid::RetinalGrid(int frame_width, int frame_height, double sites_per_pix
   centre_y_ = (size_.height - 1) / 2.0;
 }
 
-cv::Mat RetinalGrid::sample(const cv::Mat& scene, double gaze_x, double gaze_y, const cv::Scalar& outside) const {
+cv::Mat RetinalGrid::reduce(const cv::Mat& scene) const {
   CV_Assert(scene.cols == frame_width_ && scene.rows == frame_height_);
-  cv::Mat source = scene;
-  double sx = 1.0, sy = 1.0;  // frame pixels per source pixel
-  if (scale_ < 1.0) {
-    const cv::Size reduced(std::max(1, int(std::lround(frame_width_ * scale_))),
-                           std::max(1, int(std::lround(frame_height_ * scale_))));
-    cv::resize(scene, source, reduced, 0, 0, cv::INTER_AREA);
-    sx = double(frame_width_) / reduced.width;
-    sy = double(frame_height_) / reduced.height;
-  }
+  if (scale_ >= 1.0) return scene;
+  const cv::Size reduced(std::max(1, int(std::lround(frame_width_ * scale_))),
+                         std::max(1, int(std::lround(frame_height_ * scale_))));
+  cv::Mat source;
+  cv::resize(scene, source, reduced, 0, 0, cv::INTER_AREA);
+  return source;
+}
+
+cv::Mat RetinalGrid::sample_reduced(const cv::Mat& source, double gaze_x, double gaze_y,
+                                    const cv::Scalar& outside) const {
+  const double sx = double(frame_width_) / source.cols, sy = double(frame_height_) / source.rows;  // frame px per source px
   // Site u sees the frame point X = gaze_x + (u - centre_x) / scale (corner
   // origin), i.e. source pixel index X / sx - 0.5.
   const double ax = 1.0 / (scale_ * sx), ay = 1.0 / (scale_ * sy);

@@ -26,7 +26,13 @@ class RetinalGrid {
   // The scene is area-averaged to the grid's resolution first, so a light
   // smaller than a site still delivers its energy. Sites that see outside
   // the frame see `outside`.
-  cv::Mat sample(const cv::Mat& scene, double gaze_x, double gaze_y, const cv::Scalar& outside) const;
+  cv::Mat sample(const cv::Mat& scene, double gaze_x, double gaze_y, const cv::Scalar& outside) const {
+    return sample_reduced(reduce(scene), gaze_x, gaze_y, outside);
+  }
+  // The same in two parts, for several gazes on one frame: the frame
+  // averaged down to the grid's resolution (once), then sampled.
+  cv::Mat reduce(const cv::Mat& scene) const;
+  cv::Mat sample_reduced(const cv::Mat& reduced, double gaze_x, double gaze_y, const cv::Scalar& outside) const;
 
   // Draws a grid map back to a frame-sized image for a gaze at (gaze_x,
   // gaze_y), bilinearly. Frame pixels beyond the grid get `outside`.
