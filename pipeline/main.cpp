@@ -50,6 +50,7 @@ int main(int argc, char** argv) {
       "would see on an ordinary display."};
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "every option of every command");
+  app.set_version_flag("--version", std::string("eyestream ") + EYESTREAM_VERSION);
 
   Settings settings;
   ParamSet params = run_parameters(settings);
@@ -196,6 +197,7 @@ int main(int argc, char** argv) {
       }
       const RunSummary summary = run(settings);
       std::fprintf(stderr, "%s\n", summary.one_line().c_str());
+      if (summary.interrupted_by) return 128 + summary.interrupted_by;
     } else if (*bench_cmd) {
       cv::setNumThreads(bench_threads > 0 ? bench_threads : -1);
       const std::vector<BenchRow> rows = run_bench(bench);
@@ -233,6 +235,8 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "eyestream: wrote scene %s to %s\n", s.name.c_str(), scene.out_dir.c_str());
     }
     return kExitOk;
+  } catch (const Interrupted& e) {
+    return fail(ExitCode(128 + e.signal), e.what());
   } catch (const UsageError& e) {
     return fail(kExitUsage, e.what());
   } catch (const InputError& e) {

@@ -88,7 +88,8 @@ std::string describe_viewer(const GlarePlan& g) {
 
 std::string Plan::describe() const {
   std::ostringstream o;
-  o << "frame = " << width << "x" << height << " at " << frames_per_second << " fps\n"
+  o << "eyestream = " << EYESTREAM_VERSION << "\n"
+    << "frame = " << width << "x" << height << " at " << frames_per_second << " fps\n"
     << "field of view = " << fov_deg << " deg (" << pixels_per_degree << " px/deg)\n"
     << "adaptation patch = " << 2 * patch_half_px << " px\n"
     << "adaptation rates = +" << adaptation.rate_up_log_per_s << " / -" << adaptation.rate_down_log_per_s

@@ -93,7 +93,7 @@ std::vector<io::StagedFile> ReportWriter::stage() const {
     viewers.push_back(v);
   }
   const std::int64_t frames = summary_.empty() ? 0 : summary_[0].frames;
-  const nlohmann::json summary = {{"frames", frames}, {"viewers", viewers}};
+  const nlohmann::json summary = {{"eyestream", EYESTREAM_VERSION}, {"frames", frames}, {"viewers", viewers}};
   std::vector<io::StagedFile> files;
   files.push_back(stage_text(path_, rows_));
   files.push_back(stage_text(std::filesystem::path(path_).replace_extension(".json").string(), summary.dump(2) + "\n"));

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <csignal>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -21,6 +23,7 @@
 #include "pipeline/output_paths.hpp"
 #include "pipeline/checkpoint.hpp"
 #include "pipeline/gaze_timeline.hpp"
+#include "pipeline/interrupts.hpp"
 #include "pipeline/preview_renderer.hpp"
 #include "pipeline/progress.hpp"
 #include "pipeline/report_writer.hpp"
@@ -28,10 +31,16 @@
 
 namespace eyestream::pipeline {
 
+Interrupted::Interrupted(int sig)
+    : std::runtime_error(std::string("interrupted by ") + signal_name(sig) + " before any frame was written; nothing kept"),
+      signal(sig) {}
+
 std::string RunSummary::one_line() const {
   std::ostringstream o;
   o.precision(3);
-  o << "eyestream: " << frames << " frames in " << wall_s << " s (" << (wall_s > 0 ? frames / wall_s : 0.0)
+  if (interrupted_by) o << "eyestream: interrupted by " << signal_name(interrupted_by) << "; kept the first ";
+  else o << "eyestream: ";
+  o << frames << " frames in " << wall_s << " s (" << (wall_s > 0 ? frames / wall_s : 0.0)
     << " fps) -> " << output << "; final adaptation " << final_adaptation_log << " log10 cd/m^2";
   if (nonfinite_pixels) o << "; " << nonfinite_pixels << " non-finite pixels shown black";
   return o.str();
@@ -146,6 +155,8 @@ RunSummary run(const Settings& s) {
   const std::uint64_t identity = run_identity(settings);
   const std::int64_t resume_from = prepare_checkpoints(s, settings, *sink, renderer, report.get());
   const char* kill_at = std::getenv("EYESTREAM_TEST_KILL_AT_FRAME");  // crash injection for the resume test
+  const char* signal_at = std::getenv("EYESTREAM_TEST_SIGNAL_AT_FRAME");  // "N" or "N,SIGNUM": the interrupt tests
+  const InterruptGuard interrupts;
 
   std::optional<io::StagedFile> state_file;  // committed with the other outputs
   RunSummary summary;
@@ -158,6 +169,14 @@ RunSummary run(const Settings& s) {
   const std::int64_t skip_to = std::max(first_processed, resume_from);
   while (current && current->index < skip_to) current = source->next();  // before the pre-roll or the checkpoint
   while (current && (s.end_frame == 0 || current->index < s.end_frame)) {
+    if (InterruptGuard::received()) {
+      summary.interrupted_by = InterruptGuard::received();
+      // Where a resumed run would go on: a checkpoint at this frame.
+      if (!s.checkpoint.empty() && summary.frames > 0 && sink->commit_so_far())
+        write_checkpoint(s.checkpoint, {identity, settings, current->index, report ? report->save() : nlohmann::json(),
+                                        renderer.save()});
+      break;
+    }
     std::optional<io::SceneFrame> next = source->next();
     const double t1 = next ? next->time_s : current->time_s + 1.0 / info.frames_per_second;
     const bool written = current->index >= s.start_frame;
@@ -179,12 +198,15 @@ RunSummary run(const Settings& s) {
                                       renderer.save()});
     }
     if (kill_at && std::atoll(kill_at) == current->index) std::_Exit(137);
+    if (signal_at && std::atoll(signal_at) == current->index)
+      std::raise(std::strchr(signal_at, ',') ? std::atoi(std::strchr(signal_at, ',') + 1) : SIGINT);
     summary.nonfinite_pixels += main_report.nonfinite_pixels;
     if (s.verbose) log_frame(*current, main_report);
     summary.frames += written;
     progress.frame_done();
     current = std::move(next);
   }
+  if (summary.frames == 0 && summary.interrupted_by) throw Interrupted(summary.interrupted_by);
   if (summary.frames == 0)
     throw InputError(s.input + (s.start_frame > 0 ? ": no frame at or after --start-frame " +
                                                        std::to_string(s.start_frame)

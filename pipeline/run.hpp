@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 
 #include "pipeline/settings.hpp"
@@ -14,7 +15,14 @@ struct RunSummary {
   std::int64_t nonfinite_pixels = 0;
   double final_adaptation_log = 0.0;
   std::string output;
+  int interrupted_by = 0;  // the signal that stopped the run early (interrupts.hpp), or 0
   std::string one_line() const;
+};
+
+// A run stopped by a signal before it had written anything: nothing is kept.
+struct Interrupted : std::runtime_error {
+  explicit Interrupted(int sig);
+  int signal;
 };
 
 // Reads the input frame by frame (memory does not grow with length), steps
