@@ -196,7 +196,7 @@ int main(int argc, char** argv) {
         return kExitOk;
       }
       const RunSummary summary = run(settings);
-      std::fprintf(stderr, "%s\n", summary.one_line().c_str());
+      if (!settings.quiet || summary.interrupted_by) std::fprintf(stderr, "%s\n", summary.one_line().c_str());
       if (summary.interrupted_by) return 128 + summary.interrupted_by;
     } else if (*bench_cmd) {
       cv::setNumThreads(bench_threads > 0 ? bench_threads : -1);

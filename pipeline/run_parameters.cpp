@@ -228,7 +228,11 @@ ParamSet run_parameters(Settings& s) {
   set.add(number("checkpoint-every", "frames", "write the complete state every N frames (PNG/EXR outputs); 0: never",
                  prog, &s.checkpoint_every, 0, 1e12));
   set.add(flag("resume", "continue a killed run from --checkpoint (same command otherwise)", prog, &s.resume));
-  set.add(flag("progress", "progress bar on stderr when it is a terminal", prog, &s.progress));
+  set.add(flag("progress", "progress on stderr: a bar on a terminal, else a line every --progress-every seconds",
+               prog, &s.progress));
+  set.add(number("progress-every", "s", "seconds between progress lines when stderr is not a terminal (CI, Slurm)",
+                 prog, &s.progress_every_s, 0, 1e6));
+  set.add(flag("quiet", "nothing on stderr but warnings and errors (no progress, no summary line)", prog, &s.quiet));
   set.add(flag("verbose", "per-frame log on stderr", prog, &s.verbose));
   return set;
 }

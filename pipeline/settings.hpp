@@ -116,6 +116,8 @@ struct Settings {
   int threads = 0;  // 0: all cores
   std::int64_t seed = 0;
   bool progress = true;
+  double progress_every_s = 10.0;  // between plain progress lines when stderr is not a terminal
+  bool quiet = false;              // no progress and no summary line
   bool verbose = false;
 };
 
