@@ -39,13 +39,7 @@ TEST(Checkpoint, ResumeAfterAKillGivesTheUninterruptedBytes) {
   r = test::run_eyestream(part + " --resume");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(test::count_entries(dir.path() / "part"), 30) << "every frame, no temporaries left";
-  for (int k = 0; k < 30; ++k) {
-    char name[16];
-    std::snprintf(name, sizeof(name), "%05d.png", k);
-    EXPECT_TRUE(test::read_bytes(dir / (std::string("full/") + name)) ==
-                test::read_bytes(dir / (std::string("part/") + name)))
-        << name;
-  }
+  EXPECT_EQ(test::first_differing_png(dir.path() / "full", dir.path() / "part", 30), "");
   EXPECT_EQ(test::read_bytes(dir / "full.csv"), test::read_bytes(dir / "part.csv"));
   EXPECT_EQ(test::read_bytes(dir / "full.json"), test::read_bytes(dir / "part.json"));
   // Other settings: refused, naming the checkpoint and the setting.

@@ -45,6 +45,15 @@ std::string read_bytes(const std::string& path) {
   return s.str();
 }
 
+std::string first_differing_png(const fs::path& a, const fs::path& b, int frames) {
+  for (int k = 0; k < frames; ++k) {
+    char name[16];
+    std::snprintf(name, sizeof(name), "%05d.png", k);
+    if (read_bytes((a / name).string()) != read_bytes((b / name).string())) return name;
+  }
+  return "";
+}
+
 int count_entries(const fs::path& dir) {
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) return 0;

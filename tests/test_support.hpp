@@ -37,6 +37,10 @@ std::string read_bytes(const std::string& path);
 // Number of entries in a folder (0 if it does not exist).
 int count_entries(const std::filesystem::path& dir);
 
+// The first of the PNG frames 00000.png .. (frames - 1) whose bytes differ
+// between folders a and b, or "" when all are the same.
+std::string first_differing_png(const std::filesystem::path& a, const std::filesystem::path& b, int frames);
+
 // A constant CV_32FC3 frame.
 cv::Mat constant_frame(int width, int height, const cv::Vec3f& rgb);
 
