@@ -1,5 +1,7 @@
 #include "io/video_reader.hpp"
 
+#include "io/ycbcr.hpp"
+
 extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
@@ -117,15 +119,18 @@ struct VideoReader::Impl {
            std::to_string(frame->height) + ", the video began at " + std::to_string(width) + "x" +
            std::to_string(height) + " (a video whose size changes is not supported)");
     const AVPixelFormat src = AVPixelFormat(frame->format);
+    const AVColorSpace matrix =
+        frame->colorspace != AVCOL_SPC_UNSPECIFIED ? frame->colorspace : format->streams[stream]->codecpar->color_space;
+    const bool full = frame->color_range == AVCOL_RANGE_JPEG || colour.full_range;
+    // Planar Y'CbCr (what video decoders give): the standard's arithmetic.
+    if (is_planar_ycbcr(src)) return ycbcr_to_rgb(*frame, matrix, full);
     sws = sws_getCachedContext(sws, frame->width, frame->height, src, frame->width, frame->height,
                                AV_PIX_FMT_RGB48LE, SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT, nullptr,
                                nullptr, nullptr);
     if (!sws) fail("frame " + std::to_string(index) + ": cannot convert its pixel format");
-    const int* table = sws_getCoefficients(sws_matrix(frame->colorspace != AVCOL_SPC_UNSPECIFIED
-                                                          ? frame->colorspace
-                                                          : format->streams[stream]->codecpar->color_space));
-    const int src_full = frame->color_range == AVCOL_RANGE_JPEG || colour.full_range;
-    sws_setColorspaceDetails(sws, table, src_full, sws_getCoefficients(SWS_CS_DEFAULT), 1, 0, 1 << 16, 1 << 16);
+    // Anything else (RGB and packed formats) through swscale.
+    sws_setColorspaceDetails(sws, sws_getCoefficients(sws_matrix(matrix)), full, sws_getCoefficients(SWS_CS_DEFAULT),
+                             1, 0, 1 << 16, 1 << 16);
     cv::Mat rgb48(frame->height, frame->width, CV_16UC3);
     uint8_t* dst[1] = {rgb48.data};
     const int dst_stride[1] = {int(rgb48.step)};

@@ -1,5 +1,7 @@
 #include "io/video_writer.hpp"
 
+#include "io/ycbcr.hpp"
+
 extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
@@ -107,6 +109,9 @@ struct VideoWriter::Impl {
     if (rc < 0) fail(std::string("cannot open the ") + encoder_name + " encoder", rc);
     rc = avcodec_parameters_from_context(stream->codecpar, codec);
     if (rc < 0) fail("cannot set stream parameters", rc);
+    // HEVC in MP4 as 'hvc1' (parameter sets in the sample entry): Apple's
+    // players refuse the default 'hev1'.
+    if (!mkv && options.codec == "hevc") stream->codecpar->codec_tag = MKTAG('h', 'v', 'c', '1');
     stream->time_base = codec->time_base;
     stream->avg_frame_rate = rate;
     rc = avio_open(&format->pb, target.c_str(), AVIO_FLAG_WRITE);
@@ -114,16 +119,19 @@ struct VideoWriter::Impl {
     if (options.hdr10) add_hdr10_side_data();
     AVDictionary* muxer = nullptr;
     if (!file && !mkv) av_dict_set(&muxer, "movflags", "frag_keyframe+empty_moov", 0);  // MP4 on a pipe
+    // An MP4 file plays while it downloads: its index goes to the front.
+    if (file && !mkv) av_dict_set(&muxer, "movflags", "faststart", 0);
     rc = avformat_write_header(format, &muxer);
     av_dict_free(&muxer);
     if (rc < 0) fail("cannot write the container header", rc);
 
-    const AVPixelFormat rgb = options.bit_depth > 8 ? AV_PIX_FMT_RGB48LE : AV_PIX_FMT_RGB24;
-    sws = sws_getContext(width, height, rgb, width, height, pixel_format(),
-                         SWS_BICUBIC | SWS_ACCURATE_RND | SWS_BITEXACT, nullptr, nullptr, nullptr);
-    if (!sws) throw OutputError(name + ": cannot set up colour conversion");
-    const int* matrix = sws_getCoefficients(options.hdr10 || options.hlg ? SWS_CS_BT2020 : SWS_CS_ITU709);
-    sws_setColorspaceDetails(sws, matrix, 1, matrix, 0, 0, 1 << 16, 1 << 16);
+    if (options.bit_depth <= 8) {  // 8-bit RGB to Y'CbCr by swscale; deeper by ycbcr.hpp
+      sws = sws_getContext(width, height, AV_PIX_FMT_RGB24, width, height, pixel_format(),
+                           SWS_BICUBIC | SWS_ACCURATE_RND | SWS_BITEXACT, nullptr, nullptr, nullptr);
+      if (!sws) throw OutputError(name + ": cannot set up colour conversion");
+      const int* matrix = sws_getCoefficients(SWS_CS_ITU709);
+      sws_setColorspaceDetails(sws, matrix, 1, matrix, 0, 0, 1 << 16, 1 << 16);
+    }
     yuv = av_frame_alloc();
     packet = av_packet_alloc();
     if (!yuv || !packet) throw OutputError(name + ": out of memory");
@@ -205,9 +213,13 @@ struct VideoWriter::Impl {
     // bytes depend on the frame alone, not on what the heap held before.
     for (AVBufferRef* buf : yuv->buf)
       if (buf) std::memset(buf->data, 0, buf->size);
-    const uint8_t* src[1] = {padded.ptr<uint8_t>()};
-    const int src_stride[1] = {int(padded.step[0])};
-    sws_scale(sws, src, src_stride, 0, height, yuv->data, yuv->linesize);
+    if (options.bit_depth > 8) {  // the standard's arithmetic (ycbcr.hpp), not swscale's 16-bit path
+      rgb_to_ycbcr420_10(code, yuv->colorspace, *yuv);
+    } else {
+      const uint8_t* src[1] = {padded.ptr<uint8_t>()};
+      const int src_stride[1] = {int(padded.step[0])};
+      sws_scale(sws, src, src_stride, 0, height, yuv->data, yuv->linesize);
+    }
     std::int64_t pts = std::llround(time_s * av_q2d(rate));
     if (pts <= last_pts) pts = last_pts + 1;
     last_pts = pts;
