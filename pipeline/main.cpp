@@ -112,12 +112,20 @@ int main(int argc, char** argv) {
   compare_cmd->add_option("a", cmp.a, "the reference: a PNG or EXR sequence (pattern, folder, file) or a video")
       ->required();
   compare_cmd->add_option("b", cmp.b, "the output to judge, of the same kind")->required();
-  compare_cmd->add_option("--metric", cmp.metric, "what --warn and --fail judge, on the worst frame")
-      ->check(CLI::IsMember({"de99", "demax", "max", "mean", "psnr"}))
+  compare_cmd
+      ->add_option("--metric", cmp.metric,
+                   "what --warn and --fail judge, on the worst frame: visible (the share of pixels beyond "
+                   "--de-warn and --de-threshold, as idiff judges), de99, demax, max, mean or psnr")
+      ->check(CLI::IsMember({"visible", "de99", "demax", "max", "mean", "psnr"}))
       ->capture_default_str();
-  compare_cmd->add_option("--warn", cmp.warn, "warn beyond this (psnr: below it)")->capture_default_str();
-  compare_cmd->add_option("--fail", cmp.fail, "fail beyond this (psnr: below it)")->capture_default_str();
-  compare_cmd->add_option("--de-threshold", cmp.de_threshold, "count pixels whose CIEDE2000 exceeds this")
+  compare_cmd->add_option("--warn", cmp.warn,
+                          "warn beyond this (visible: a share of pixels, default 0; others default 0.5; psnr: below it)");
+  compare_cmd->add_option("--fail", cmp.fail,
+                          "fail beyond this (visible: a share of pixels, default 0; others default 1; psnr: below it)");
+  compare_cmd->add_option("--de-threshold", cmp.de_threshold, "a pixel beyond this CIEDE2000 differs visibly (fails)")
+      ->check(CLI::Range(0.0, 100.0))
+      ->capture_default_str();
+  compare_cmd->add_option("--de-warn", cmp.de_warn, "a pixel beyond this CIEDE2000 warns (with --metric visible)")
       ->check(CLI::Range(0.0, 100.0))
       ->capture_default_str();
   compare_cmd->add_option("--diff-out", cmp.diff_out, "CIEDE2000 heat maps: a PNG pattern (diff/%05d.png)");

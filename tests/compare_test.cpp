@@ -49,6 +49,38 @@ TEST(Compare, ExitCodesPassWarnFailOnIdenticalSlightAndLargeChanges) {
   EXPECT_EQ(r.exit_code, 0) << r.output;
 }
 
+TEST(Compare, ByDefaultAVisibleLocalChangeFailsAndDitherSizedNoisePasses) {
+  // As idiff judges a regression: a 10x10 white square pasted into every
+  // frame fails however small a share of the frame it is; +-1 code of
+  // random noise on every pixel (the size of dithering) passes.
+  test::ScratchDir dir;
+  const std::string a = write_sequence(dir, "a", 3, 0, cv::Size(320, 240));
+  std::filesystem::create_directories(dir.path() / "square");
+  std::filesystem::create_directories(dir.path() / "noise");
+  cv::RNG rng(5);
+  for (int i = 0; i < 3; ++i) {
+    char file[32];
+    std::snprintf(file, sizeof(file), "/%05d.png", i);
+    cv::Mat img = cv::imread((dir.path() / "a").string() + file);
+    cv::Mat square = img.clone();
+    square(cv::Rect(200, 100, 10, 10)).setTo(cv::Scalar::all(255));
+    cv::imwrite((dir.path() / "square").string() + file, square);
+    cv::Mat noise(img.size(), CV_16SC3);
+    rng.fill(noise, cv::RNG::UNIFORM, -1, 2);  // -1, 0 or +1
+    cv::Mat noisy;
+    img.convertTo(noisy, CV_16SC3);
+    noisy += noise;
+    noisy.convertTo(noisy, CV_8UC3);
+    cv::imwrite((dir.path() / "noise").string() + file, noisy);
+  }
+  auto r = test::run_eyestream("compare " + a + " " + (dir / "square/%05d.png"));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("largest CIEDE2000"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("00000.png, x 20"), std::string::npos) << "names the frame and the pixel: " << r.output;
+  r = test::run_eyestream("compare " + a + " " + (dir / "noise/%05d.png"));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+}
+
 TEST(Compare, MismatchedCountsOrSizesFailWithAMessage) {
   test::ScratchDir dir;
   const std::string a = write_sequence(dir, "a", 3, 0), shorter = write_sequence(dir, "short", 2, 0);
