@@ -93,13 +93,20 @@ std::vector<io::StagedFile> ReportWriter::stage() const {
     viewers.push_back(v);
   }
   const std::int64_t frames = summary_.empty() ? 0 : summary_[0].frames;
-  const nlohmann::json summary = {{"eyestream", EYESTREAM_VERSION}, {"frames", frames}, {"viewers", viewers}};
+  nlohmann::json summary = {{"eyestream", EYESTREAM_VERSION}, {"frames", frames}, {"viewers", viewers}};
+  if (!gaze_.is_null()) summary["gaze"] = gaze_;
   std::vector<io::StagedFile> files;
   files.push_back(stage_text(path_, rows_));
   files.push_back(stage_text(std::filesystem::path(path_).replace_extension(".json").string(), summary.dump(2) + "\n"));
   files.push_back(
       stage_report_charts(parse_report(rows_, path_), std::filesystem::path(path_).replace_extension(".png").string()));
   return files;
+}
+
+void ReportWriter::set_gaze(const io::GazeSummary& g) {
+  gaze_ = {{"format", g.format},         {"samples", g.samples},         {"median_interval_s", g.median_interval_s},
+           {"first_s", g.first_s},       {"last_s", g.last_s},           {"lost_share", g.lost_share},
+           {"closed_share", g.closed_share}, {"off_frame_share", g.off_frame_share}, {"warnings", g.warnings}};
 }
 
 nlohmann::json ReportWriter::save() const {

@@ -3,6 +3,8 @@
 // end of the run.
 #pragma once
 
+#include "io/gaze_summary.hpp"
+
 #include "io/staged_file.hpp"
 #include <nlohmann/json.hpp>
 #include <string>
@@ -39,6 +41,8 @@ class ReportWriter {
  public:
   ReportWriter(std::string csv_path, std::vector<ReportViewer> viewers);
   void add(std::int64_t frame, double time_s, size_t viewer, const FrameReport& r);
+  // What the gaze log held (gaze_summary.hpp), for the JSON summary.
+  void set_gaze(const io::GazeSummary& gaze);
   // Writes FILE.csv, FILE.json and FILE.png under temporary names, for the
   // caller to commit with the run's other outputs.
   std::vector<io::StagedFile> stage() const;
@@ -55,6 +59,7 @@ class ReportWriter {
   std::string path_, rows_;
   std::vector<ReportViewer> viewers_;
   std::vector<Summary> summary_;
+  nlohmann::json gaze_;
 };
 
 }  // namespace eyestream::pipeline

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <optional>
 #include <opencv2/core.hpp>
@@ -15,6 +16,7 @@
 #include "io/background_sink.hpp"
 #include "io/error.hpp"
 #include "io/gaze_import.hpp"
+#include "io/gaze_summary.hpp"
 #include "io/library_logging.hpp"
 #include "io/prefetch_source.hpp"
 #include "io/sink_factory.hpp"
@@ -38,6 +40,7 @@ Interrupted::Interrupted(int sig)
 std::string RunSummary::one_line() const {
   std::ostringstream o;
   o.precision(3);
+  if (!gaze.empty()) o << "eyestream: " << gaze << "\n";
   if (interrupted_by) o << "eyestream: interrupted by " << signal_name(interrupted_by) << "; kept the first ";
   else o << "eyestream: ";
   o << frames << " frames in " << wall_s << " s (" << (wall_s > 0 ? frames / wall_s : 0.0)
@@ -76,12 +79,43 @@ std::unique_ptr<io::FrameSource> open_input(const Settings& s) {
 // run is held to one thread. The frames and their order do not change.
 bool overlap_io(const Settings& s) { return s.threads != 1; }
 
+struct LoadedGaze {
+  std::vector<io::GazeSample> samples;
+  std::optional<io::GazeSummary> summary;  // when there is a log
+};
+
+// The gaze log and what it holds against the video (gaze_summary.hpp).
+LoadedGaze load_gaze(const Settings& s, const io::SourceInfo& info) {
+  LoadedGaze g;
+  if (s.gaze.empty()) return g;
+  const io::GazeImportOptions o = gaze_import_options(s, info);
+  g.samples = io::read_gaze(s.gaze, o);
+  io::GazeFormat format = o.format;
+  if (format == io::GazeFormat::kAuto) {
+    std::string head(4096, '\0');
+    std::ifstream in(s.gaze, std::ios::binary);
+    in.read(head.data(), std::streamsize(head.size()));
+    head.resize(size_t(in.gcount()));
+    format = io::detect_gaze_format(head);
+  }
+  const double end_s =
+      info.frame_count > 0 && info.frames_per_second > 0 ? double(info.frame_count) / info.frames_per_second : -1.0;
+  g.summary = io::summarise_gaze(g.samples, format, info.width, info.height, end_s);
+  return g;
+}
+
 }  // namespace
 
 std::string describe_run(const Settings& s) {
   const std::unique_ptr<io::FrameSource> source = open_input(s);
   const PreviewRenderer renderer(s, source->info(), io::sink_needs(s.output, s.sink));
-  return s.input + ": " + source->info().description + "\n" + renderer.describe();
+  std::string text = s.input + ": " + source->info().description + "\n" + renderer.describe();
+  const LoadedGaze gaze = load_gaze(s, source->info());  // refused here as `run` would refuse it
+  if (gaze.summary) {
+    text += gaze.summary->line() + "\n";
+    for (const std::string& w : gaze.summary->warnings) text += "warning: " + w + "\n";
+  }
+  return text;
 }
 
 namespace {
@@ -138,8 +172,10 @@ RunSummary run(const Settings& s) {
   io::set_library_verbosity(s.verbose);
   std::unique_ptr<io::FrameSource> source = open_input(s);
   const io::SourceInfo& info = source->info();
-  std::vector<io::GazeSample> samples;
-  if (!s.gaze.empty()) samples = io::read_gaze(s.gaze, gaze_import_options(s, info));
+  const LoadedGaze gaze = load_gaze(s, info);
+  const std::vector<io::GazeSample>& samples = gaze.samples;
+  if (gaze.summary)  // before the work; the summary line itself comes with the run's (RunSummary)
+    for (const std::string& w : gaze.summary->warnings) std::fprintf(stderr, "eyestream: warning: %s\n", w.c_str());
   const TargetRegion target(s.target_rect, s.target_mask, cv::Size(info.width, info.height));
   check_outputs(run_outputs(s));  // before anything is written
   io::SinkOptions sink_options = s.sink;
@@ -151,6 +187,7 @@ RunSummary run(const Settings& s) {
   const size_t main = renderer.main_panel();
   const GazeTimeline timeline(samples, info.width / 2.0, info.height / 2.0);
   std::unique_ptr<ReportWriter> report = report_writer(s, renderer);
+  if (report && gaze.summary) report->set_gaze(*gaze.summary);
   const std::string settings = run_settings(s, info);
   const std::uint64_t identity = run_identity(settings);
   const std::int64_t resume_from = prepare_checkpoints(s, settings, *sink, renderer, report.get());
@@ -221,6 +258,7 @@ RunSummary run(const Settings& s) {
   progress.finish();
   summary.wall_s = progress.elapsed_s();
   summary.final_adaptation_log = renderer.eye(main).adaptation_log();
+  if (gaze.summary) summary.gaze = gaze.summary->line();
   return summary;
 }
 

@@ -16,7 +16,8 @@ struct RunSummary {
   double final_adaptation_log = 0.0;
   std::string output;
   int interrupted_by = 0;  // the signal that stopped the run early (interrupts.hpp), or 0
-  std::string one_line() const;
+  std::string gaze;        // what the gaze log held (gaze_summary.hpp), when there was one
+  std::string one_line() const;  // with the gaze log's line before it
 };
 
 // A run stopped by a signal before it had written anything: nothing is kept.
