@@ -1,5 +1,5 @@
-// libFuzzer target: the Radiance .hdr and PFM readers. The first byte picks
-// the format; the rest is the file. Malformed files end in InputError or
+// libFuzzer target: the Radiance .hdr, PFM and TIFF readers. The first byte
+// picks the format; the rest is the file. Malformed files end in InputError or
 // UsageError.
 #include <cstddef>
 #include <cstdint>
@@ -14,7 +14,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   o.max_pixels = 1'000'000;
   try {
     eyestream::io::FloatImageSource source(
-        eyestream::fuzz::write_input(data + 1, size - 1, data[0] & 1 ? ".pfm" : ".hdr"), o);
+        eyestream::fuzz::write_input(data + 1, size - 1, data[0] % 3 == 0 ? ".hdr" : data[0] % 3 == 1 ? ".pfm" : ".tif"),
+        o);
     while (source.next()) {
     }
   } catch (const eyestream::InputError&) {

@@ -46,12 +46,43 @@ cv::Size hdr_size(std::istream& in, const std::string& path) {
   return y_first ? checked(path, n2, n1) : checked(path, n1, n2);
 }
 
+// TIFF: byte order ("II" or "MM"), 42, the first directory's offset; its
+// ImageWidth (256) and ImageLength (257) entries, SHORT or LONG.
+cv::Size tiff_size(std::istream& in, const std::string& path) {
+  unsigned char head[8];
+  if (!in.read(reinterpret_cast<char*>(head), 8)) malformed(path, "not a TIFF file");
+  const bool little = head[0] == 'I' && head[1] == 'I';
+  if (!little && !(head[0] == 'M' && head[1] == 'M')) malformed(path, "not a TIFF file");
+  const auto number = [&](const unsigned char* b, int bytes) {
+    unsigned long long v = 0;
+    for (int i = 0; i < bytes; ++i) v |= (unsigned long long)b[little ? i : bytes - 1 - i] << (8 * i);
+    return v;
+  };
+  if (number(head + 2, 2) == 43) malformed(path, "BigTIFF is not read; save as a classic TIFF");
+  if (number(head + 2, 2) != 42) malformed(path, "not a TIFF file");
+  in.seekg(std::streamoff(number(head + 4, 4)));
+  unsigned char count_bytes[2];
+  if (!in.read(reinterpret_cast<char*>(count_bytes), 2)) malformed(path, "not a TIFF file (no image directory)");
+  long long w = 0, h = 0;
+  for (unsigned long long i = 0, n = number(count_bytes, 2); i < n && i < 4096; ++i) {
+    unsigned char e[12];
+    if (!in.read(reinterpret_cast<char*>(e), 12)) malformed(path, "not a TIFF file (truncated image directory)");
+    const unsigned long long tag = number(e, 2), type = number(e + 2, 2);
+    const long long value = type == 3 ? (long long)number(e + 8, 2) : type == 4 ? (long long)number(e + 8, 4) : -1;
+    if (tag == 256) w = value;
+    if (tag == 257) h = value;
+  }
+  return checked(path, w, h);
+}
+
 }  // namespace
 
 cv::Size float_image_size(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) malformed(path, "cannot open");
-  return lower_extension(path) == ".pfm" ? pfm_size(in, path) : hdr_size(in, path);
+  const std::string ext = lower_extension(path);
+  if (ext == ".tif" || ext == ".tiff") return tiff_size(in, path);
+  return ext == ".pfm" ? pfm_size(in, path) : hdr_size(in, path);
 }
 
 }  // namespace eyestream::io

@@ -1,4 +1,4 @@
-// The size a Radiance .hdr or PFM file declares, read from its header
+// The size a Radiance .hdr, PFM or TIFF file declares, read from its header
 // before anything is decoded, so a tiny file claiming a huge image is
 // refused without allocating it.
 #pragma once

@@ -13,18 +13,21 @@ namespace eyestream::io {
 
 namespace {
 
-const std::vector<std::string> kExtensions = {".hdr", ".pfm"};
+const std::vector<std::string> kExtensions = {".hdr", ".pfm", ".tif", ".tiff"};
+
+bool is_still_extension(const std::string& ext) {
+  return std::find(kExtensions.begin(), kExtensions.end(), ext) != kExtensions.end();
+}
 
 }  // namespace
 
 bool is_float_image_input(const std::string& input) {
-  const std::string ext = lower_extension(input);
-  if (ext == ".hdr" || ext == ".pfm") return true;
+  if (is_still_extension(lower_extension(input))) return true;
   if (!std::filesystem::is_directory(input)) return false;
   for (const auto& e : std::filesystem::directory_iterator(input)) {
     const std::string x = lower_extension(e.path().string());
     if (x == ".exr") return false;
-    if (x == ".hdr" || x == ".pfm") return true;
+    if (is_still_extension(x)) return true;
   }
   return false;
 }

@@ -10,6 +10,7 @@
 #include "io/exr_file.hpp"
 #include "io/float_image_source.hpp"
 #include "io/video_reader.hpp"
+#include "io/source_factory.hpp"
 #include "tests/test_support.hpp"
 
 namespace eyestream {
@@ -134,6 +135,30 @@ TEST(StillInput, PfmSequencesAndRadianceFilesAreReadInCandelas) {
   EXPECT_THROW(changing.next(), InputError);
   const auto r = test::run_eyestream("run -i " + (dir / "still.hdr") + " -o " + (dir / "still/%05d.png"));
   EXPECT_EQ(r.exit_code, 0) << r.output;
+}
+
+TEST(StillInput, FloatTiffIsReadInCandelasAndItsDeclaredSizeCheckedFirst) {
+  // Written by OpenCV's TIFF encoder (libtiff, 32-bit IEEE float), read as
+  // a still in cd/m^2, not sent to the video reader.
+  test::ScratchDir dir;
+  cv::Mat bgr(kH, kW, CV_32FC3, cv::Scalar(0.25, 40.0, 12345.5));  // B, G, R
+  ASSERT_TRUE(cv::imwrite(dir / "still.tif", bgr, {cv::IMWRITE_TIFF_COMPRESSION, 1}));  // none: not LogLuv
+  const auto source = io::open_source(dir / "still.tif", io::SourceOptions{});
+  EXPECT_EQ(source->info().width, kW);
+  EXPECT_EQ(source->info().height, kH);
+  const cv::Vec3f p = source->next()->rgb.at<cv::Vec3f>(2, 3);
+  EXPECT_FLOAT_EQ(p[0], 12345.5f) << "R";
+  EXPECT_FLOAT_EQ(p[1], 40.0f) << "G";
+  EXPECT_FLOAT_EQ(p[2], 0.25f) << "B";
+  // A classic TIFF header declaring 100000 x 100000: refused before decoding.
+  const unsigned char huge[] = {'I', 'I', 42, 0, 8, 0, 0, 0, 2, 0,
+                                0, 1, 4, 0, 1, 0, 0, 0, 0xa0, 0x86, 0x01, 0,   // ImageWidth LONG 100000
+                                1, 1, 4, 0, 1, 0, 0, 0, 0xa0, 0x86, 0x01, 0,   // ImageLength LONG 100000
+                                0, 0, 0, 0};
+  std::ofstream(dir / "huge.tiff", std::ios::binary).write(reinterpret_cast<const char*>(huge), sizeof(huge));
+  const auto r = test::run_eyestream("run -i " + (dir / "huge.tiff") + " -o " + (dir / "h.mp4"));
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_NE(r.output.find("huge.tiff: 100000x100000 exceeds the limit"), std::string::npos) << r.output;
 }
 
 }  // namespace
