@@ -1,7 +1,12 @@
 // SR Research EyeLink ASC files (edf2asc): sample lines "time x y pupil"
 // (binocular: "time xl yl pl xr yr pr"), "." for missing values, SBLINK /
-// EBLINK events, screen size from the DISPLAY_COORDS message; times in ms.
+// EBLINK events, screen size from the DISPLAY_COORDS message; times in ms
+// (fractional at 2 kHz). Real files carry calibration blocks whose values
+// continue on indented lines: samples are read only from lines that start
+// with a digit in column 0 inside START ... END recording blocks (a file
+// with no START line, an excerpt, is read whole).
 #include <cctype>
+#include <optional>
 #include <sstream>
 
 #include "io/delimited_table.hpp"
@@ -10,11 +15,15 @@
 
 namespace eyestream::io {
 
-std::vector<GazeSample> parse_eyelink(const std::string& text, const std::string& name, const GazeImportOptions& o) {
+std::vector<GazeSample> parse_eyelink(const std::string& text, const std::string& name, const GazeImportOptions& o,
+                                      std::optional<double>* sync_s) {
   std::istringstream in(text);
   std::string line;
   int line_no = 0;
   bool blinking = false;
+  const bool blocks = text.rfind("START", 0) == 0 || text.find("\nSTART") != std::string::npos;
+  bool recording = !blocks;
+  bool display_coords = false;
   double screen_w = o.source_width, screen_h = o.source_height;
   std::vector<GazeSample> raw;  // positions in screen pixels until the end
   while (std::getline(in, line)) {
@@ -30,8 +39,16 @@ std::vector<GazeSample> parse_eyelink(const std::string& text, const std::string
           double l, t, r, b;
           if (parse_number(w[i + 1], l) && parse_number(w[i + 2], t) && parse_number(w[i + 3], r) &&
               parse_number(w[i + 4], b))
-            screen_w = r - l + 1, screen_h = b - t + 1;
+            screen_w = r - l + 1, screen_h = b - t + 1, display_coords = true;
         }
+      double t;
+      if (sync_s && !*sync_s && !o.sync_message.empty() && w.size() >= 3 &&
+          line.find(o.sync_message, line.find(w[1]) + w[1].size()) != std::string::npos && parse_number(w[1], t))
+        *sync_s = t * 1e-3;  // the stimulus onset the user marked
+      continue;
+    }
+    if (w[0] == "START" || w[0] == "END") {
+      recording = w[0] == "START" || !blocks;
       continue;
     }
     if (w[0] == "SBLINK" && w.size() >= 3) {
@@ -45,7 +62,9 @@ std::vector<GazeSample> parse_eyelink(const std::string& text, const std::string
       blinking = false;
       continue;
     }
-    if (!std::isdigit(static_cast<unsigned char>(w[0][0]))) continue;  // other events and headers
+    // Other events, headers, indented continuation lines, and anything
+    // outside the recording blocks.
+    if (!recording || !std::isdigit(static_cast<unsigned char>(line[0]))) continue;
     GazeSample s;
     double t, x, y;
     if (!parse_number(w[0], t)) throw InputError(where + ": sample time '" + w[0] + "' is not a number");
@@ -61,6 +80,11 @@ std::vector<GazeSample> parse_eyelink(const std::string& text, const std::string
       s.x = x, s.y = y;
     raw.push_back(s);
   }
+  if (!display_coords && (o.source_width <= 0 || o.source_height <= 0))
+    throw InputError(name + ": no DISPLAY_COORDS message gives the screen the gaze is in; give its size with "
+                            "--gaze-source-width and --gaze-source-height");
+  if (!o.sync_message.empty() && sync_s && !*sync_s)
+    throw InputError(name + ": no MSG line contains '" + o.sync_message + "' (--gaze-sync-message)");
   const double sx = screen_w > 0 ? o.frame_width / screen_w : 1.0, sy = screen_h > 0 ? o.frame_height / screen_h : 1.0;
   for (GazeSample& s : raw) s.x *= sx, s.y *= sy;
   return raw;

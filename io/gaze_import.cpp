@@ -30,10 +30,13 @@ std::vector<GazeSample> parse_gaze(const std::string& text, const std::string& n
     for (GazeSample& g : s) g.t_s += o.offset_s;
     return s;
   }
+  if (!o.sync_message.empty() && format != GazeFormat::kEyeLink)
+    throw UsageError("--gaze-sync-message: only EyeLink ASC files carry messages (use --gaze-sync)");
+  std::optional<double> message_time;
   std::vector<GazeSample> s = format == GazeFormat::kPupilCore ? parse_pupil_core(text, name, o)
                               : format == GazeFormat::kNeon    ? parse_neon(text, name, o)
                               : format == GazeFormat::kTobii   ? parse_tobii(text, name, o)
-                                                               : parse_eyelink(text, name, o);
+                                                               : parse_eyelink(text, name, o, &message_time);
   if (s.empty()) throw InputError(name + ": no gaze samples");
   std::stable_sort(s.begin(), s.end(), [](const GazeSample& a, const GazeSample& b) { return a.t_s < b.t_s; });
   std::vector<GazeSample> unique;
@@ -43,7 +46,7 @@ std::vector<GazeSample> parse_gaze(const std::string& text, const std::string& n
     else
       unique.push_back(g);
   }
-  const double zero = o.sync_clock.value_or(unique.front().t_s);
+  const double zero = message_time ? *message_time : o.sync_clock.value_or(unique.front().t_s);
   for (GazeSample& g : unique) g.t_s = g.t_s - zero + o.offset_s;
   return unique;
 }

@@ -24,6 +24,7 @@ struct GazeImportOptions {
   double min_confidence = 0.6;       // Pupil Core: lower confidence is "lost"
   double offset_s = 0.0;             // added to every time after alignment
   std::optional<double> sync_clock;  // export clock (its own unit, seconds) at frame 0; default the first sample
+  std::string sync_message;          // EyeLink: the first MSG line holding this text is frame 0
 };
 
 // Reads `path` in the given or detected format. Exports whose clock is
@@ -53,6 +54,8 @@ inline void place(GazeSample& s, bool seen, double x, double y, double sx, doubl
 std::vector<GazeSample> parse_pupil_core(const std::string& text, const std::string& name, const GazeImportOptions& o);
 std::vector<GazeSample> parse_neon(const std::string& text, const std::string& name, const GazeImportOptions& o);
 std::vector<GazeSample> parse_tobii(const std::string& text, const std::string& name, const GazeImportOptions& o);
-std::vector<GazeSample> parse_eyelink(const std::string& text, const std::string& name, const GazeImportOptions& o);
+// `sync_s` receives the time of the first MSG holding o.sync_message.
+std::vector<GazeSample> parse_eyelink(const std::string& text, const std::string& name, const GazeImportOptions& o,
+                                      std::optional<double>* sync_s = nullptr);
 
 }  // namespace eyestream::io

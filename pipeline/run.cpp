@@ -68,6 +68,7 @@ io::GazeImportOptions gaze_import_options(const Settings& s, const io::SourceInf
   o.min_confidence = s.gaze_confidence;
   o.offset_s = s.gaze_offset_s;
   o.sync_clock = s.gaze_sync_s;
+  o.sync_message = s.gaze_sync_message;
   return o;
 }
 

@@ -31,6 +31,8 @@ ParamSet run_parameters(Settings& s) {
   set.add(number("gaze-offset", "s", "added to every gaze time (after sync)", in, &s.gaze_offset_s, -1e6, 1e6));
   set.add(number("gaze-sync", "s", "export clock at the first frame (exports only; default: the first sample)", in,
                  &s.gaze_sync_s, -1e12, 1e12));
+  set.add(text("gaze-sync-message", "EyeLink: the first MSG line holding this text (a stimulus onset) is the first frame",
+               in, &s.gaze_sync_message));
   set.add(number("gaze-confidence", "", "Pupil Core samples below this confidence count as lost", in,
                  &s.gaze_confidence, 0, 1));
   set.add(number("gaze-source-width", "px", "width of the export's scene camera or screen; 0: the format's own", in,

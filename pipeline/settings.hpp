@@ -30,6 +30,7 @@ struct Settings {
   std::string gaze_format = "auto";  // auto, native, pupil-core, neon, tobii, eyelink
   double gaze_offset_s = 0.0;
   std::optional<double> gaze_sync_s;
+  std::string gaze_sync_message;  // EyeLink: the first MSG holding this text is frame 0
   double gaze_confidence = 0.6;
   int gaze_source_width = 0, gaze_source_height = 0;
 

@@ -97,6 +97,73 @@ TEST(GazeImport, EyeLinkSamplesMissingValuesAndBlinks) {
   EXPECT_DOUBLE_EQ(s[3].y, 50.0);
 }
 
+// The structure of real edf2asc output: a header, a calibration block whose
+// values continue on indented lines (numbers with trailing commas), the
+// recording block between START and END, 2 kHz fractional times, and a
+// stimulus-onset message to sync on.
+const char* kRealAsc =
+    "** CONVERTED FROM D:\\data\\s01.edf using edfapi 4.2 Jan 15 2020\n"
+    "** DATE: Tue Mar  3 10:12:44 2020\n"
+    "**\n"
+    "\n"
+    "MSG\t645210 !CAL \n"
+    ">>>>>>> CALIBRATION (HV9,P-CR) FOR LEFT: <<<<<<<<<\n"
+    "MSG\t645210 !CAL Calibration points:  \n"
+    "MSG\t645210 !CAL -10.9, -36.8         0,      0 \n"
+    "MSG\t645210 !CAL eye check box: (L,R,T,B)\n"
+    "\t   -41     26    -51     -0\n"
+    "MSG\t645210 !CAL href cal range: (L,R,T,B)\n"
+    "\t-5220   5220  -3915   3915\n"
+    "MSG\t645210 !CAL Cal coeff:(X=a+bx+cy+dxx+eyy,Y=f+gx+goaly+ixx+jyy)\n"
+    "   9.5364e-06,  0.1295,  0.0015, -0.00014,  2.1e-05 \n"
+    "   4.2e-05,  0.0031,  0.14,  3.3e-05, -0.00011 \n"
+    "MSG\t645211 DISPLAY_COORDS 0 0 1919 1079\n"
+    "1280000.0\t  0.1\t 33.5\t 1000.0\t...\n"
+    "START\t1288000 \tLEFT\tSAMPLES\tEVENTS\n"
+    "PRESCALER\t1\n"
+    "MSG\t1288010 TRIAL_START stimulus onset\n"
+    "1288000.0\t 100.0\t 200.0\t 1100.0\t...\n"
+    "1288000.5\t 101.0\t 201.0\t 1100.0\t...\n"
+    "1288010.0\t 960.0\t 540.0\t 1100.0\t...\n"
+    "1288010.5\t 962.0\t 541.0\t 1100.0\t...\n"
+    "END\t1288011 \tSAMPLES\tEVENTS\tRES\t38.4\t35.9\n"
+    "1290000.0\t 5.0\t 5.0\t 1000.0\t...\n";
+
+TEST(GazeImport, RealEyeLinkStructureCalibrationBlocksAndAMessageToSyncOn) {
+  GazeImportOptions o = frame_1000x500();
+  ASSERT_EQ(detect_gaze_format(kRealAsc), GazeFormat::kEyeLink);
+  const auto s = parse_gaze(kRealAsc, "s01.asc", o);
+  ASSERT_EQ(s.size(), 4u) << "only the recording block's samples; no calibration line, none outside START-END";
+  EXPECT_DOUBLE_EQ(s[0].t_s, 0.0) << "time 0 is the block's first sample, not a calibration line";
+  EXPECT_NEAR(s[1].t_s, 0.0005, 1e-12) << "2 kHz: fractional milliseconds";
+  EXPECT_NEAR(s[2].x, 960.0 * 1000 / 1920, 1e-9) << "DISPLAY_COORDS 1920x1080 scaled to the 1000x500 frame";
+  o.sync_message = "TRIAL_START";
+  const auto synced = parse_gaze(kRealAsc, "s01.asc", o);
+  EXPECT_NEAR(synced[2].t_s, 0.0, 1e-12) << "the TRIAL_START message is frame 0";
+  EXPECT_NEAR(synced[0].t_s, -0.010, 1e-12);
+  o.sync_message = "NO_SUCH_MESSAGE";
+  try {
+    parse_gaze(kRealAsc, "s01.asc", o);
+    FAIL() << "a missing sync message must be refused";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("s01.asc: no MSG line contains 'NO_SUCH_MESSAGE'"), std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(GazeImport, EyeLinkWithoutDisplayCoordsNeedsTheScreenSize) {
+  const std::string text = "START\t1000 \tLEFT\tSAMPLES\n1000\t100.0\t50.0\t900.0\t...\nEND\t1001\n";
+  GazeImportOptions o = frame_1000x500();
+  try {
+    parse_gaze(text, "bare.asc", o);
+    FAIL() << "unmappable coordinates must be refused";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--gaze-source-width"), std::string::npos) << e.what();
+  }
+  o.source_width = 2000, o.source_height = 1000;
+  EXPECT_DOUBLE_EQ(parse_gaze(text, "bare.asc", o)[0].x, 50.0);
+}
+
 TEST(GazeImport, SyncAndOffsetAlignTheClock) {
   const std::string text = "gaze_timestamp,confidence,norm_pos_x,norm_pos_y\n10.0,1,0.5,0.5\n10.5,1,0.5,0.5\n";
   GazeImportOptions o = frame_1000x500();
