@@ -65,7 +65,9 @@ cv::Mat ycbcr_to_rgb(const AVFrame& f, AVColorSpace matrix, bool full_range) {
   const AVChromaLocation loc = f.chroma_location == AVCHROMA_LOC_UNSPECIFIED ? AVCHROMA_LOC_LEFT : f.chroma_location;
   const bool left = loc == AVCHROMA_LOC_LEFT || loc == AVCHROMA_LOC_TOPLEFT || loc == AVCHROMA_LOC_BOTTOMLEFT;
   const bool top = loc == AVCHROMA_LOC_TOPLEFT || loc == AVCHROMA_LOC_TOP;
-  const double ox = sx == 1 || left ? 0.0 : (sx - 1) / 2.0, oy = sy == 1 || top ? 0.0 : (sy - 1) / 2.0;
+  const bool bottom = loc == AVCHROMA_LOC_BOTTOMLEFT || loc == AVCHROMA_LOC_BOTTOM;
+  const double ox = sx == 1 || left ? 0.0 : (sx - 1) / 2.0;
+  const double oy = sy == 1 || top ? 0.0 : bottom ? sy - 1.0 : (sy - 1) / 2.0;
   cv::Mat out(f.height, f.width, CV_32FC3);
   cv::parallel_for_(cv::Range(0, f.height), [&](const cv::Range& rows) {
     for (int y = rows.start; y < rows.end; ++y) {

@@ -38,6 +38,7 @@ FrameMetrics measure(const cv::Mat& a, const cv::Mat& b, bool linear, double de_
   const double mse = cv::mean(diff.mul(diff)).dot(cv::Scalar(1, 1, 1, 0)) / 3;
   m.psnr = mse > 0 ? 10 * std::log10(1.0 / mse) : std::numeric_limits<double>::infinity();
   std::vector<float> values(de.begin<float>(), de.end<float>());
+  if (values.empty()) return m;  // an empty frame: nothing differs
   const size_t k = std::min(values.size() - 1, size_t(std::ceil(0.99 * values.size())) - 1);
   std::nth_element(values.begin(), values.begin() + k, values.end());
   m.de_p99 = values[k];
