@@ -23,8 +23,10 @@ GazeFormat detect_gaze_format(const std::string& text) {
   return GazeFormat::kNative;
 }
 
-std::vector<GazeSample> parse_gaze(const std::string& text, const std::string& name, const GazeImportOptions& o) {
+std::vector<GazeSample> parse_gaze(const std::string& text, const std::string& name, const GazeImportOptions& o,
+                                   GazeFormat* format_read) {
   const GazeFormat format = o.format == GazeFormat::kAuto ? detect_gaze_format(text) : o.format;
+  if (format_read) *format_read = format;
   if (format == GazeFormat::kNative) {
     std::vector<GazeSample> s = parse_gaze_csv(text, name, o.units, o.frame_width, o.frame_height);
     for (GazeSample& g : s) g.t_s += o.offset_s;
@@ -51,13 +53,13 @@ std::vector<GazeSample> parse_gaze(const std::string& text, const std::string& n
   return unique;
 }
 
-std::vector<GazeSample> read_gaze(const std::string& path, const GazeImportOptions& o) {
+std::vector<GazeSample> read_gaze(const std::string& path, const GazeImportOptions& o, GazeFormat* format) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open gaze log");
   protect_input(path);
   std::stringstream ss;
   ss << in.rdbuf();
-  return parse_gaze(ss.str(), path, o);
+  return parse_gaze(ss.str(), path, o, format);
 }
 
 }  // namespace eyestream::io

@@ -32,10 +32,13 @@ struct GazeImportOptions {
 // sample) is time 0; then offset_s is added. Export samples are ordered by
 // time; of samples at the same time the last is kept. Malformed lines are
 // an InputError naming the file and line.
-std::vector<GazeSample> read_gaze(const std::string& path, const GazeImportOptions& options);
+// `format`, when given, receives the format read (the detected one for kAuto).
+std::vector<GazeSample> read_gaze(const std::string& path, const GazeImportOptions& options,
+                                  GazeFormat* format = nullptr);
 
 // The same for text in memory; `name` stands for the file in messages.
-std::vector<GazeSample> parse_gaze(const std::string& text, const std::string& name, const GazeImportOptions& options);
+std::vector<GazeSample> parse_gaze(const std::string& text, const std::string& name, const GazeImportOptions& options,
+                                   GazeFormat* format = nullptr);
 
 // The format the text's header looks like (kNative when unsure).
 GazeFormat detect_gaze_format(const std::string& text);

@@ -7,7 +7,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <optional>
 #include <opencv2/core.hpp>
@@ -90,15 +89,8 @@ LoadedGaze load_gaze(const Settings& s, const io::SourceInfo& info) {
   LoadedGaze g;
   if (s.gaze.empty()) return g;
   const io::GazeImportOptions o = gaze_import_options(s, info);
-  g.samples = io::read_gaze(s.gaze, o);
   io::GazeFormat format = o.format;
-  if (format == io::GazeFormat::kAuto) {
-    std::string head(4096, '\0');
-    std::ifstream in(s.gaze, std::ios::binary);
-    in.read(head.data(), std::streamsize(head.size()));
-    head.resize(size_t(in.gcount()));
-    format = io::detect_gaze_format(head);
-  }
+  g.samples = io::read_gaze(s.gaze, o, &format);
   const double end_s =
       info.frame_count > 0 && info.frames_per_second > 0 ? double(info.frame_count) / info.frames_per_second : -1.0;
   g.summary = io::summarise_gaze(g.samples, format, info.width, info.height, end_s);

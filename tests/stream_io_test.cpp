@@ -150,6 +150,14 @@ TEST(StillInput, FloatTiffIsReadInCandelasAndItsDeclaredSizeCheckedFirst) {
   EXPECT_FLOAT_EQ(p[0], 12345.5f) << "R";
   EXPECT_FLOAT_EQ(p[1], 40.0f) << "G";
   EXPECT_FLOAT_EQ(p[2], 0.25f) << "B";
+  // The same reader on a TIFF built byte by byte here (not by OpenCV's
+  // writer): 2x2, uncompressed, RGB float32, every pixel (1, 2, 3).
+  const std::string seed = test::read_bytes(std::string(EYESTREAM_SOURCE_DIR) + "/fuzz/corpus/float_image/two.tif.bin");
+  std::ofstream(dir / "two.tif", std::ios::binary).write(seed.data() + 1, std::streamsize(seed.size() - 1));
+  const auto two = io::open_source(dir / "two.tif", io::SourceOptions{});
+  EXPECT_EQ(two->info().width, 2);
+  const cv::Vec3f q = two->next()->rgb.at<cv::Vec3f>(1, 1);
+  EXPECT_EQ(q, cv::Vec3f(1.0f, 2.0f, 3.0f)) << "R, G, B as stored";
   // A classic TIFF header declaring 100000 x 100000: refused before decoding.
   const unsigned char huge[] = {'I', 'I', 42, 0, 8, 0, 0, 0, 2, 0,
                                 0, 1, 4, 0, 1, 0, 0, 0, 0xa0, 0x86, 0x01, 0,   // ImageWidth LONG 100000
