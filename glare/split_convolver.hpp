@@ -41,6 +41,8 @@ class SplitConvolver {
 
   int factor() const { return factor_; }
   int near_radius() const { return radius_; }
+  // The near level's kernels: their centre pixels are the undivided ones'.
+  const ComponentKernels& near_kernels() const { return near_; }
 
  private:
   struct Level {

@@ -18,7 +18,14 @@ EyeSimulator::EyeSimulator(Plan plan)
     : plan_(std::move(plan)),
       retina_(std::make_unique<RetinaStage>(plan_)),
       mesopic_(std::make_unique<MesopicStage>(plan_)),
-      glare_(plan_.glare.enabled ? std::make_unique<GlareStage>(plan_) : nullptr) {}
+      glare_(plan_.glare.enabled ? std::make_unique<GlareStage>(plan_) : nullptr),
+      solid_angles_(plan_.projection->identity() ? cv::Mat() : plan_.projection->solid_angle_weights()) {}
+
+double EyeSimulator::patch_log_mean(const retina::LuminanceField& field, double x, double y, double surround) const {
+  // The patch is patch_deg wide in true angle at the gaze.
+  const cv::Vec2d ppd = plan_.projection->local_pixels_per_degree({x, y});
+  return field.patch_log_mean(x, y, 0.5 * plan_.patch_deg * ppd[0], 0.5 * plan_.patch_deg * ppd[1], surround);
+}
 
 io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::vector<GazeSegment>& segments,
                                        FrameReport* report, const cv::Mat& target_mask) {
@@ -30,7 +37,7 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
   auto clock = std::chrono::steady_clock::now();
   StageActivity active;
   StageTimes times;
-  const retina::LuminanceField scene_field(scene, plan_.dark_cd_m2);
+  const retina::LuminanceField scene_field(scene, plan_.dark_cd_m2, solid_angles_);
   const double surround = plan_.surround_from_edge
                               ? retina::edge_log_mean(scene, plan_.pixels_per_degree, plan_.dark_cd_m2)
                               : plan_.surround_cd_m2;
@@ -44,7 +51,7 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
   // the interval (on the first frame, the scene's target).
   const GazeSegment& first = segments.front();
   const double optics_log =
-      adaptation_ ? *adaptation_ : scene_field.patch_log_mean(first.x, first.y, plan_.patch_half_px, surround);
+      adaptation_ ? *adaptation_ : patch_log_mean(scene_field, first.x, first.y, surround);
   if (!pupil_) pupil_ = pupil_target(false);
   const cv::Mat retinal = glare_ ? glare_->apply(scene, optics_log, surround, *pupil_, &active.glare, &active.glare_reused) : scene;
   times.glare_ms = lap_ms(clock);
@@ -58,7 +65,7 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
   std::vector<double> adapted;
   adapted.reserve(segments.size());
   for (const GazeSegment& seg : segments) {
-    const double scene_log = field.patch_log_mean(seg.x, seg.y, plan_.patch_half_px, surround);
+    const double scene_log = patch_log_mean(field, seg.x, seg.y, surround);
     target = seg.eye_closed ? plan_.dark_log : scene_log;
     if (!adaptation_) adaptation_ = scene_log;
     adaptation_ = retina::adaptation_step(*adaptation_, target, seg.duration(), plan_.adaptation);

@@ -14,6 +14,7 @@
 #include "pipeline/retina_stage.hpp"
 #include "pipeline/stage_activity.hpp"
 #include "pipeline/target_region.hpp"
+#include "retina/luminance_field.hpp"
 
 namespace eyestream::pipeline {
 
@@ -74,6 +75,8 @@ class EyeSimulator {
  private:
   void fill_glare_report(const cv::Mat& scene, const GazeSegment& gaze, const cv::Mat& target_mask,
                          FrameReport& r) const;
+  // log10 of the mean luminance over the adaptation patch at frame point (x, y).
+  double patch_log_mean(const retina::LuminanceField& field, double x, double y, double surround) const;
 
   Plan plan_;
   std::optional<double> adaptation_;
@@ -81,6 +84,7 @@ class EyeSimulator {
   std::unique_ptr<RetinaStage> retina_;
   std::unique_ptr<MesopicStage> mesopic_;
   std::unique_ptr<GlareStage> glare_;
+  cv::Mat solid_angles_;  // each pixel's solid angle (empty: all equal), for the pupil's field
 };
 
 }  // namespace eyestream::pipeline

@@ -10,19 +10,32 @@
 namespace eyestream::pipeline {
 
 GlareStage::GlareStage(const Plan& plan) : plan_(plan), optics_(plan.eye_optics()) {
+  const cv::Size plane = plan.plane_size();
   if (plan.glare.gaussian) {  // no kernels: a separable blur does the work
+    const double sigma = plan.glare.gaussian_sigma_deg * plan.pixels_per_degree;
+    const cv::Mat g = cv::getGaussianKernel(cvRound(sigma * 8 + 1) | 1, sigma, CV_64F);  // GaussianBlur's, for floats
+    const double centre = g.at<double>(g.rows / 2) * g.at<double>(g.rows / 2);
+    for (cv::Vec3d& c : centre_) c = cv::Vec3d::all(centre);
     if (plan.glare.full)
       in_frame_.push_back(spread(cv::Mat(plan.height, plan.width, CV_32FC3, cv::Scalar::all(1.0)), {}));
     return;
   }
   // The full kernels also give the report its veil (veiling_luminance.hpp).
   if (plan.glare.tail_factor <= 1 || plan.report)
-    kernels_ = glare::build_component_kernels(plan.width, plan.height, plan.pixels_per_degree, optics_);
+    kernels_ = glare::build_component_kernels(plane.width, plane.height, plan.pixels_per_degree, optics_);
   if (plan.glare.tail_factor > 1)
-    split_ = std::make_unique<glare::SplitConvolver>(plan.width, plan.height, plan.pixels_per_degree,
+    split_ = std::make_unique<glare::SplitConvolver>(plane.width, plane.height, plan.pixels_per_degree,
                                                      plan.glare.tail_factor, optics_);
   else
     convolver_ = std::make_unique<glare::FftConvolver>(kernels_);
+  const glare::ComponentKernels& k = split_ ? split_->near_kernels() : kernels_;
+  const cv::Point c = k.centre();
+  for (int ch = 0; ch < 3; ++ch) {
+    centre_[0][ch] = k.core.at<double>(c);
+    centre_[1][ch] = k.inner.at<double>(c);
+    centre_[2][ch] = k.outer.at<double>(c);
+    centre_[3][ch] = k.halo[ch].at<double>(c);
+  }
   if (!plan.glare.full) return;
   // The in-frame share of each component, by the engine itself, so that a
   // uniform scene and surround come out uniform to the engine's rounding.
@@ -37,11 +50,56 @@ GlareStage::GlareStage(const Plan& plan) : plan_(plan), optics_(plan.eye_optics(
 std::optional<double> GlareStage::veil_at(const cv::Mat& luminance, double adaptation_log, double pupil_mm, double x,
                                           double y, double exclusion_deg) const {
   if (plan_.glare.gaussian || kernels_.core.empty()) return std::nullopt;
-  return glare::veiling_luminance(luminance, kernels_, optics_.weights(adaptation_log, pupil_mm), x, y,
-                                  exclusion_deg * plan_.pixels_per_degree);
+  const glare::PsfWeights w = optics_.weights(adaptation_log, pupil_mm);
+  const double exclusion_px = exclusion_deg * plan_.pixels_per_degree;
+  const FrameProjection& p = *plan_.projection;
+  if (p.identity()) return glare::veiling_luminance(luminance, kernels_, w, x, y, exclusion_px);
+  // On the angle plane (each pixel's luminance times its solid angle),
+  // between the four plane pixels around the point, as the picture is.
+  const cv::Mat flux = p.to_plane_flux(luminance);
+  const cv::Point2d at = p.to_plane({x, y}) - cv::Point2d(0.5, 0.5);
+  const double u0 = std::floor(at.x), v0 = std::floor(at.y), fu = at.x - u0, fv = at.y - v0;
+  double veil = 0.0;
+  for (int dv = 0; dv < 2; ++dv)
+    for (int du = 0; du < 2; ++du)
+      veil += (du ? fu : 1 - fu) * (dv ? fv : 1 - fv) *
+              glare::veiling_luminance(flux, kernels_, w, u0 + du + 0.5, v0 + dv + 0.5, exclusion_px);
+  return veil;
+}
+
+cv::Vec3f GlareStage::kept_share(const glare::PsfWeights& w) const {
+  const cv::Vec3d k = w.core * centre_[0] + w.inner * centre_[1] + w.outer * centre_[2] + w.halo * centre_[3];
+  return plan_.glare.gaussian ? cv::Vec3f::all(float(centre_[0][0])) : cv::Vec3f(float(k[0]), float(k[1]), float(k[2]));
 }
 
 cv::Mat GlareStage::spread(const cv::Mat& rgb, const glare::PsfWeights& w) const {
+  const FrameProjection& p = *plan_.projection;
+  if (p.identity()) return spread_plane(rgb, w);
+  // The plane carries the light that leaves its pixel; the light the PSF
+  // keeps there stays on the frame's pixels, sharp.
+  const cv::Mat flux = p.to_plane_flux(rgb);
+  cv::Mat scattered = spread_plane(flux, w);
+  const cv::Vec3f kept = kept_share(w);
+  cv::parallel_for_(cv::Range(0, scattered.rows), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      cv::Vec3f* s = scattered.ptr<cv::Vec3f>(y);
+      const cv::Vec3f* f = flux.ptr<cv::Vec3f>(y);
+      for (int x = 0; x < scattered.cols; ++x)
+        for (int c = 0; c < 3; ++c) s[x][c] = std::max(0.0f, s[x][c] - kept[c] * f[x][c]);
+    }
+  });
+  cv::Mat out = p.to_frame_image(scattered);
+  cv::parallel_for_(cv::Range(0, out.rows), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      cv::Vec3f* o = out.ptr<cv::Vec3f>(y);
+      const cv::Vec3f* in = rgb.ptr<cv::Vec3f>(y);
+      for (int x = 0; x < out.cols; ++x) o[x] += kept.mul(in[x]);
+    }
+  });
+  return out;
+}
+
+cv::Mat GlareStage::spread_plane(const cv::Mat& rgb, const glare::PsfWeights& w) const {
   if (plan_.glare.gaussian) {
     // Yoshida et al. 2008: a Gaussian of sigma 0.34 deg; light leaving the frame is lost.
     const double sigma = plan_.glare.gaussian_sigma_deg * plan_.pixels_per_degree;

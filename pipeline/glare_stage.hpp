@@ -46,8 +46,16 @@ class GlareStage {
   const glare::ComponentKernels& kernels() const { return kernels_; }
 
  private:
-  // Convolves `rgb` with the PSF of weights `w`.
+  // Convolves `rgb` (frame pixels) with the PSF of weights `w` at true
+  // angles: on the angle plane (frame_projection.hpp) unless the frame is
+  // its own, the light the PSF keeps within its centre pixel staying on the
+  // frame's pixels, unresampled.
   cv::Mat spread(const cv::Mat& rgb, const glare::PsfWeights& w) const;
+  // The convolution on the angle plane.
+  cv::Mat spread_plane(const cv::Mat& plane, const glare::PsfWeights& w) const;
+  // Per channel, the share of a pixel's light the PSF of weights `w` keeps
+  // in that pixel.
+  cv::Vec3f kept_share(const glare::PsfWeights& w) const;
   // Adds the light the surround scatters into the frame: S (1 - M(x)),
   // M(x) the share of the PSF at x that falls inside the frame.
   void add_surround(cv::Mat& retinal, const glare::PsfWeights& w, double surround_cd_m2) const;
@@ -60,6 +68,9 @@ class GlareStage {
   // Full mode: per component (core, inner, outer, halo), the share of the
   // PSF centred at each pixel that falls inside the frame (CV_32FC3).
   std::vector<cv::Mat> in_frame_;
+  // Per component (core, inner, outer, halo) and channel, the kernel's
+  // centre pixel.
+  cv::Vec3d centre_[4];
   // The last full-mode frame, for still scenes.
   struct Cache {
     cv::Mat scene, retinal;

@@ -16,8 +16,10 @@ Plan compile_plan(const Settings& s, const io::SourceInfo& source) {
   p.height = source.height;
   p.frames_per_second = source.frames_per_second;
   p.fov_deg = field_of_view_deg(s.geometry, source.width, source.height);
-  p.pixels_per_degree = pixels_per_degree(s.geometry, source.width, source.height);
-  p.patch_half_px = 0.5 * s.adaptation_patch_deg * p.pixels_per_degree;
+  p.projection = std::make_shared<const FrameProjection>(source.width, source.height, p.fov_deg,
+                                                         projection_from_name(s.geometry.projection));
+  p.pixels_per_degree = p.projection->pixels_per_degree();
+  p.patch_deg = s.adaptation_patch_deg;
   p.dark_cd_m2 = s.dark_cd_m2;
   p.dark_log = std::log10(s.dark_cd_m2);
   p.surround_from_edge = !s.surround_cd_m2.has_value();
@@ -90,8 +92,13 @@ std::string Plan::describe() const {
   std::ostringstream o;
   o << "eyestream = " << EYESTREAM_VERSION << "\n"
     << "frame = " << width << "x" << height << " at " << frames_per_second << " fps\n"
-    << "field of view = " << fov_deg << " deg (" << pixels_per_degree << " px/deg)\n"
-    << "adaptation patch = " << 2 * patch_half_px << " px\n"
+    << "field of view = " << fov_deg << " deg, " << projection_name(projection->kind()) << " ("
+    << pixels_per_degree << " px/deg at the centre"
+    << (projection->identity() ? std::string()
+                               : ", angle plane " + std::to_string(plane_size().width) + "x" +
+                                     std::to_string(plane_size().height))
+    << ")\n"
+    << "adaptation patch = " << patch_deg << " deg\n"
     << "adaptation rates = +" << adaptation.rate_up_log_per_s << " / -" << adaptation.rate_down_log_per_s
     << " log10/s\n"
     << "glare = " << describe_glare(glare) << "\n"

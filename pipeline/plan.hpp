@@ -2,11 +2,13 @@
 // (the OpenColorIO Config -> Processor idea, DESIGN.md).
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include "glare/eye_optics.hpp"
 #include "glare/pupil_dynamics.hpp"
 #include "io/frame_source.hpp"
+#include "pipeline/frame_projection.hpp"
 #include "pipeline/settings.hpp"
 #include "retina/acuity_loss.hpp"
 #include "retina/mesopic.hpp"
@@ -47,8 +49,12 @@ struct GlarePlan {
 struct Plan {
   int width = 0, height = 0;
   double frames_per_second = 30.0;
-  double fov_deg = 0.0, pixels_per_degree = 0.0;
-  double patch_half_px = 0.0;  // half side of the adaptation patch
+  double fov_deg = 0.0;
+  // The frame's directions and the angle plane the optics and the retina
+  // work in; pixels_per_degree is the plane's (the frame's at its centre).
+  std::shared_ptr<const FrameProjection> projection;
+  double pixels_per_degree = 0.0;
+  double patch_deg = 1.5;  // side of the adaptation patch
   double surround_cd_m2 = 1.0;                       // fixed surround
   bool surround_from_edge = true;                    // or the frame's edge, frame by frame (settings.hpp)
   glare::PupilDynamics pupil;
@@ -69,9 +75,11 @@ struct Plan {
   // One "name = value" line per resolved setting.
   std::string describe() const;
 
-  // The frame's angular area (deg^2): the pupil's adapting field when the
+  // The frame's solid angle (deg^2): the pupil's adapting field when the
   // viewer names none.
-  double frame_area_deg2() const { return (width / pixels_per_degree) * (height / pixels_per_degree); }
+  double frame_area_deg2() const { return projection->solid_angle_deg2(); }
+  // The angle plane's size (the frame's when equidistant).
+  cv::Size plane_size() const { return projection->plane_size(); }
 
   // The viewer's optics for this frame (glare/eye_optics.hpp).
   glare::EyeOptics eye_optics() const {

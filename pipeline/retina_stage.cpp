@@ -1,6 +1,7 @@
 #include "pipeline/retina_stage.hpp"
 
 #include <cmath>
+#include <opencv2/imgproc.hpp>
 
 #include "io/exr_file.hpp"
 #include "io/staged_file.hpp"
@@ -49,21 +50,31 @@ std::vector<StepGroup> group_segments(const std::vector<GazeSegment>& segments, 
 
 RetinaStage::RetinaStage(const Plan& plan)
     : plan_(plan),
-      grid_(plan.width, plan.height, plan.retina.sites_per_pixel),
+      grid_(plan.plane_size().width, plan.plane_size().height, plan.retina.sites_per_pixel),
       state_(grid_.size(), plan.retina.receptors, plan.retina.double_precision),
       visibility_(grid_.foveal_falloff(plan.retina.fovea_sigma_px)) {
   const int type = plan.retina.double_precision ? CV_64FC3 : CV_32FC3;
   dark_ = cv::Mat(grid_.size(), type, cv::Scalar::all(plan.dark_cd_m2));
 }
 
-void RetinaStage::advance(const cv::Mat& rgb, const std::vector<GazeSegment>& segments,
+void RetinaStage::advance(const cv::Mat& rgb, const std::vector<GazeSegment>& frame_segments,
                           const std::vector<double>& adaptation_log, double surround_cd_m2) {
-  const cv::Mat lms = grid_.reduce(retina::to_cone_stimulus(rgb, plan_.retina.double_precision ? CV_64F : CV_32F));
+  // The grid lives on the angle plane (frame_projection.hpp): the scene and
+  // the gaze are carried there.
+  const FrameProjection& p = *plan_.projection;
   const cv::Scalar surround = cv::Scalar::all(surround_cd_m2);
+  const cv::Mat cones = retina::to_cone_stimulus(rgb, plan_.retina.double_precision ? CV_64F : CV_32F);
+  const cv::Mat lms = p.identity() ? grid_.reduce(cones) : reduce_frame(cones);
+  std::vector<GazeSegment> segments = frame_segments;
+  for (GazeSegment& s : segments) {
+    const cv::Point2d at = p.to_plane({s.x, s.y});
+    s.x = at.x;
+    s.y = at.y;
+  }
   double frame_dt = 0.0;
   stepped_ = false;
   for (const StepGroup& g : group_segments(segments, plan_.retina.substep_tolerance_px)) {
-    const cv::Mat stimulus = g.closed ? dark_ : grid_.sample_reduced(lms, g.x, g.y, surround);
+    const cv::Mat stimulus = g.closed ? dark_ : sample(lms, g.x, g.y, surround);
     const double curve_log = adaptation_log[g.last];
     const retina::ToneCurve curve(curve_log, plan_.tone);
     if (!started_) {
@@ -85,6 +96,25 @@ void RetinaStage::advance(const cv::Mat& rgb, const std::vector<GazeSegment>& se
   // Soft afterimages: the departure from equilibrium spreads as sigma^2 =
   // rate * dt, so the look does not depend on the frame rate.
   state_.soften(spread_variance_sites2(frame_dt));
+}
+
+cv::Mat RetinaStage::reduce_frame(const cv::Mat& cones) const {
+  const double k = grid_.sites_per_pixel();
+  if (k >= 1.0) return cones;
+  cv::Mat out;
+  cv::resize(cones, out, cv::Size(std::max(1, int(std::lround(cones.cols * k))), std::max(1, int(std::lround(cones.rows * k)))),
+             0, 0, cv::INTER_AREA);
+  return out;
+}
+
+cv::Mat RetinaStage::sample(const cv::Mat& reduced, double plane_x, double plane_y, const cv::Scalar& surround) const {
+  const FrameProjection& p = *plan_.projection;
+  if (p.identity()) return grid_.sample_reduced(reduced, plane_x, plane_y, surround);
+  // Each (reduced) frame pixel lands on the site that sees its direction
+  // with the eye turned to the gaze, its light area-averaged there.
+  const cv::Point2d gaze = p.to_frame({plane_x, plane_y});
+  const cv::Mat sites = p.gaze_positions(gaze, reduced.size(), grid_.sites_per_pixel(), grid_.fovea());
+  return FrameProjection::splat(reduced, sites, grid_.size(), surround);
 }
 
 double RetinaStage::spread_variance_sites2(double dt_s) const {
@@ -117,8 +147,17 @@ bool RetinaStage::composite(const cv::Mat& tone_mapped, double gaze_x, double ga
     return false;
   }
   const retina::AfterimageMaps maps = state_.afterimages(plan_.retina.afterimages, visibility_);
-  const cv::Mat gain = grid_.draw(maps.gain_excess, gaze_x, gaze_y, cv::Scalar::all(0.0));
-  const cv::Mat bleach = grid_.draw(maps.bleach, gaze_x, gaze_y, cv::Scalar::all(0.0));
+  const FrameProjection& p = *plan_.projection;
+  const cv::Scalar none = cv::Scalar::all(0.0);
+  cv::Mat gain, bleach;
+  if (p.identity()) {
+    gain = grid_.draw(maps.gain_excess, gaze_x, gaze_y, none);
+    bleach = grid_.draw(maps.bleach, gaze_x, gaze_y, none);
+  } else {
+    const cv::Mat sites = p.gaze_positions({gaze_x, gaze_y}, p.frame_size(), grid_.sites_per_pixel(), grid_.fovea());
+    gain = grid_.draw_at(maps.gain_excess, sites, none);
+    bleach = grid_.draw_at(maps.bleach, sites, none);
+  }
   retina::composite_afterimages(tone_mapped, gain, bleach, out);
   resting_ = maps.largest <= kRestTolerance;
   return true;

@@ -59,6 +59,11 @@ class RetinaStage {
   const retina::RetinalGrid& grid() const { return grid_; }
 
  private:
+  // The cone stimulus averaged down to about the grid's resolution.
+  cv::Mat reduce_frame(const cv::Mat& cones) const;
+  // The grid's stimulus for the gaze at plane point (plane_x, plane_y).
+  cv::Mat sample(const cv::Mat& reduced, double plane_x, double plane_y, const cv::Scalar& surround) const;
+
   const Plan plan_;
   retina::RetinalGrid grid_;
   retina::RetinaState state_;

@@ -42,6 +42,10 @@ ParamSet run_parameters(Settings& s) {
   // Viewing condition.
   set.add(number("fov-deg", "deg", "horizontal field of view of the frame; 0 derives it from the display", view,
                  &s.geometry.fov_deg, 0, 179));
+  set.add(choice("projection",
+                 "how the frame maps to directions: rectilinear (renderers, simulators, a flat display) or "
+                 "equidistant (angle-uniform, fisheye)",
+                 view, &s.geometry.projection, {"rectilinear", "equidistant"}));
   set.add(number("display-diagonal", "m", "display diagonal; the frame fills the display", view,
                  &s.geometry.display_diagonal_m, 0.01, 100));
   set.add(number("viewing-distance", "m", "eye to display distance", view, &s.geometry.viewing_distance_m, 0.01, 1000));

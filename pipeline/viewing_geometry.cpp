@@ -12,7 +12,9 @@ double field_of_view_deg(const ViewingGeometry& g, int width, int height) {
 }
 
 double pixels_per_degree(const ViewingGeometry& g, int width, int height) {
-  return double(width) / field_of_view_deg(g, width, height);
+  const double fov = field_of_view_deg(g, width, height);
+  if (g.projection == "equidistant") return double(width) / fov;
+  return 0.5 * double(width) / std::tan(0.5 * fov * M_PI / 180.0) * M_PI / 180.0;
 }
 
 }  // namespace eyestream::pipeline

@@ -8,17 +8,25 @@
 
 namespace eyestream::retina {
 
-LuminanceField::LuminanceField(const cv::Mat& rgb, double floor_cd_m2) {
+LuminanceField::LuminanceField(const cv::Mat& rgb, double floor_cd_m2, const cv::Mat& weights) {
   const cv::Mat l = floored_luminance(rgb, floor_cd_m2);
   cv::integral(l, integral_, CV_64F);
+  const int cols = integral_.cols - 1, rows = integral_.rows - 1;
+  if (weights.empty()) {
+    mean_ = integral_.at<double>(rows, cols) / (double(cols) * double(rows));
+  } else {
+    CV_Assert(weights.type() == CV_32F && weights.size() == l.size());
+    mean_ = l.dot(weights) / cv::sum(weights)[0];
+  }
 }
 
-double LuminanceField::patch_log_mean(double x, double y, double half, double surround_cd_m2) const {
+double LuminanceField::patch_log_mean(double x, double y, double half_x, double half_y, double surround_cd_m2) const {
   const int cols = integral_.cols - 1, rows = integral_.rows - 1;
-  half = std::max(half, 0.5);
+  half_x = std::max(half_x, 0.5);
+  half_y = std::max(half_y, 0.5);
   // The patch in whole pixels (at least one), then its part inside the frame.
-  const long px0 = std::lround(x - half), py0 = std::lround(y - half);
-  const long px1 = std::max(std::lround(x + half), px0 + 1), py1 = std::max(std::lround(y + half), py0 + 1);
+  const long px0 = std::lround(x - half_x), py0 = std::lround(y - half_y);
+  const long px1 = std::max(std::lround(x + half_x), px0 + 1), py1 = std::max(std::lround(y + half_y), py0 + 1);
   const int x0 = int(std::clamp<long>(px0, 0, cols)), x1 = int(std::clamp<long>(px1, 0, cols));
   const int y0 = int(std::clamp<long>(py0, 0, rows)), y1 = int(std::clamp<long>(py1, 0, rows));
   const double total = double(px1 - px0) * double(py1 - py0);
@@ -26,11 +34,6 @@ double LuminanceField::patch_log_mean(double x, double y, double half, double su
   const double sum = integral_.at<double>(y1, x1) - integral_.at<double>(y0, x1) - integral_.at<double>(y1, x0) +
                      integral_.at<double>(y0, x0);
   return std::log10((sum + (total - inside) * surround_cd_m2) / total);
-}
-
-double LuminanceField::frame_mean() const {
-  const int cols = integral_.cols - 1, rows = integral_.rows - 1;
-  return integral_.at<double>(rows, cols) / (double(cols) * double(rows));
 }
 
 double edge_log_mean(const cv::Mat& rgb, double band_px, double floor_cd_m2) {

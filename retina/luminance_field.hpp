@@ -12,20 +12,28 @@ class LuminanceField {
  public:
   // `rgb` is linear Rec.709 in cd/m^2. Luminance below floor_cd_m2 (and
   // non-finite or negative luminance) counts as floor_cd_m2.
-  LuminanceField(const cv::Mat& rgb, double floor_cd_m2);
+  // `weights` (CV_32F, frame-sized; empty: all equal) weigh the pixels in
+  // frame_mean(): their solid angles, for a frame whose pixels do not all
+  // subtend the same angle.
+  LuminanceField(const cv::Mat& rgb, double floor_cd_m2, const cv::Mat& weights = cv::Mat());
 
   // log10 of the mean luminance over the square of side 2*half_size_px
   // centred at (x, y) in frame pixels (origin at the top-left corner of the
   // top-left pixel). The part of the square outside the frame counts as
   // surround_cd_m2. A patch half 1000 and half 1 cd/m^2 gives log10(500.5):
   // bright parts dominate, as they do for the eye.
-  double patch_log_mean(double x, double y, double half_size_px, double surround_cd_m2) const;
+  double patch_log_mean(double x, double y, double half_size_px, double surround_cd_m2) const {
+    return patch_log_mean(x, y, half_size_px, half_size_px, surround_cd_m2);
+  }
+  // The same over a rectangle of half sides half_x_px and half_y_px.
+  double patch_log_mean(double x, double y, double half_x_px, double half_y_px, double surround_cd_m2) const;
 
-  // Mean luminance of the whole frame (cd/m^2).
-  double frame_mean() const;
+  // Mean luminance of the whole frame (cd/m^2), weighted as constructed.
+  double frame_mean() const { return mean_; }
 
  private:
   cv::Mat integral_;  // CV_64F, (rows+1) x (cols+1)
+  double mean_ = 0.0;
 };
 
 // The geometric mean luminance (cd/m^2) of the band of width band_px along

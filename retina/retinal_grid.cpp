@@ -13,13 +13,16 @@ RetinalGrid::RetinalGrid(int frame_width, int frame_height, double sites_per_pix
   centre_y_ = (size_.height - 1) / 2.0;
 }
 
+cv::Size RetinalGrid::reduced_size() const {
+  if (scale_ >= 1.0) return {frame_width_, frame_height_};
+  return {std::max(1, int(std::lround(frame_width_ * scale_))), std::max(1, int(std::lround(frame_height_ * scale_)))};
+}
+
 cv::Mat RetinalGrid::reduce(const cv::Mat& scene) const {
   CV_Assert(scene.cols == frame_width_ && scene.rows == frame_height_);
   if (scale_ >= 1.0) return scene;
-  const cv::Size reduced(std::max(1, int(std::lround(frame_width_ * scale_))),
-                         std::max(1, int(std::lround(frame_height_ * scale_))));
   cv::Mat source;
-  cv::resize(scene, source, reduced, 0, 0, cv::INTER_AREA);
+  cv::resize(scene, source, reduced_size(), 0, 0, cv::INTER_AREA);
   return source;
 }
 
@@ -42,6 +45,13 @@ cv::Mat RetinalGrid::draw(const cv::Mat& map, double gaze_x, double gaze_y, cons
   cv::Mat out;
   cv::warpAffine(map, out, m, cv::Size(frame_width_, frame_height_), cv::INTER_LINEAR | cv::WARP_INVERSE_MAP,
                  cv::BORDER_CONSTANT, outside);
+  return out;
+}
+
+cv::Mat RetinalGrid::draw_at(const cv::Mat& map, const cv::Mat& sites, const cv::Scalar& outside) const {
+  CV_Assert(map.size() == size_);
+  cv::Mat out;
+  cv::remap(map, out, sites, cv::Mat(), cv::INTER_LINEAR, cv::BORDER_CONSTANT, outside);
   return out;
 }
 

@@ -32,11 +32,18 @@ class RetinalGrid {
   // The same in two parts, for several gazes on one frame: the frame
   // averaged down to the grid's resolution (once), then sampled.
   cv::Mat reduce(const cv::Mat& scene) const;
+  // The size reduce() gives.
+  cv::Size reduced_size() const;
   cv::Mat sample_reduced(const cv::Mat& reduced, double gaze_x, double gaze_y, const cv::Scalar& outside) const;
 
   // Draws a grid map back to a frame-sized image for a gaze at (gaze_x,
   // gaze_y), bilinearly. Frame pixels beyond the grid get `outside`.
   cv::Mat draw(const cv::Mat& map, double gaze_x, double gaze_y, const cv::Scalar& outside) const;
+  // The same for a frame whose pixels see the sites `sites` (CV_32FC2, the
+  // output's size; site coordinates, centres at integers).
+  cv::Mat draw_at(const cv::Mat& map, const cv::Mat& sites, const cv::Scalar& outside) const;
+  // The fovea in site coordinates.
+  cv::Point2d fovea() const { return {centre_x_, centre_y_}; }
 
   // Gaussian fall-off exp(-e^2 / 2 sigma^2) of each site's eccentricity e
   // (frame pixels from the fovea), CV_32F; all ones for sigma_px <= 0.

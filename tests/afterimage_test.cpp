@@ -168,9 +168,12 @@ TEST(Afterimages, FixatedPatchesLeaveNegativeAndOpponentAfterimages) {
 }
 
 // MODEL.md 0: afterimages are locked to the retina. After a flash, a gaze
-// jump of N pixels moves the afterimage N pixels on the display, unsmeared.
+// jump of N pixels moves the afterimage N pixels on the display, unsmeared
+// (on an equidistant frame, whose pixels all subtend one angle).
 TEST(Afterimages, AfterimageMovesWithTheGazeWithoutSmearing) {
-  Viewer v(reference_settings());
+  Settings s = reference_settings();
+  s.geometry.projection = "equidistant";
+  Viewer v(s);
   const cv::Mat dark = test::constant_frame(kW, kH, {0, 0, 0});
   for (int i = 0; i < 8; ++i) v.see(flash_frame(1e7f));
   const cv::Mat before = v.see(dark);

@@ -90,10 +90,10 @@ TEST(FullGlare, ThePictureShowsTheVeilTheReportMeasures) {
   cv::Mat luminance(scene.size(), CV_32F);
   for (int y = 0; y < kH; ++y)
     for (int x = 0; x < kW; ++x) luminance.at<float>(y, x) = retina::photopic_luminance(scene.at<cv::Vec3f>(y, x));
-  const double x = 40 + 3 * plan.pixels_per_degree;
-  const std::optional<double> veil = stage.veil_at(luminance, 0.0, 3.0, x, 45.0, 1.0);
+  const int x = 40 + int(std::lround(3 * plan.pixels_per_degree));
+  const std::optional<double> veil = stage.veil_at(luminance, 0.0, 3.0, x + 0.5, 45.5, 1.0);
   ASSERT_TRUE(veil.has_value());
-  const double shown = retina::photopic_luminance(retinal.at<cv::Vec3f>(45, int(x)));
+  const double shown = retina::photopic_luminance(retinal.at<cv::Vec3f>(45, x));
   EXPECT_NEAR(shown / *veil, 1.0, 0.03) << "picture " << shown << " cd/m^2, report " << *veil;
 }
 

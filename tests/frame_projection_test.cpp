@@ -1,0 +1,120 @@
+// The angle plane of a rectilinear frame, checked against a pinhole camera
+// written out in the test (true_angle_oracle.hpp): distances from the
+// centre are true angles, local scales and solid angles are the camera's,
+// and carrying a frame into the plane keeps its light.
+#include "pipeline/frame_projection.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <opencv2/core/utility.hpp>
+
+#include "tests/true_angle_oracle.hpp"
+
+namespace eyestream::pipeline {
+namespace {
+
+constexpr int kW = 960, kH = 540;
+const test::PinholeFrame kPinhole{kW, kH, 120.0};
+
+TEST(FrameProjection, PlaneDistanceFromTheCentreIsTheTrueAngle) {
+  const FrameProjection p(kW, kH, 120.0, Projection::rectilinear);
+  const cv::Point2d centre(0.5 * kW, 0.5 * kH), plane_centre = p.to_plane(centre);
+  EXPECT_NEAR(p.pixels_per_degree(), kPinhole.focal_px() * M_PI / 180.0, 1e-9);
+  for (const cv::Point2d q : {cv::Point2d(10, 10), cv::Point2d(900, 30), cv::Point2d(480, 500), cv::Point2d(700, 300)}) {
+    const cv::Point2d a = p.to_plane(q);
+    EXPECT_NEAR(cv::norm(a - plane_centre) / p.pixels_per_degree(), kPinhole.angle_deg(centre, q), 1e-9);
+    EXPECT_NEAR(p.angle_deg(q, centre), kPinhole.angle_deg(q, centre), 1e-9);
+    const cv::Point2d back = p.to_frame(a);
+    EXPECT_NEAR(back.x, q.x, 1e-6);
+    EXPECT_NEAR(back.y, q.y, 1e-6);
+  }
+  // Along a line through the centre, any two points are their true angle apart.
+  const cv::Point2d left(kPinhole.x_at_deg(-30), 0.5 * kH), right(kPinhole.x_at_deg(50), 0.5 * kH);
+  EXPECT_NEAR(cv::norm(p.to_plane(right) - p.to_plane(left)) / p.pixels_per_degree(), 80.0, 1e-9);
+  // The plane spans the frame's 120 deg.
+  EXPECT_NEAR(p.plane_size().width / p.pixels_per_degree(), 120.0, 1.0 / p.pixels_per_degree());
+}
+
+TEST(FrameProjection, LocalScaleAndSolidAngleAreThePinholesOwn) {
+  const FrameProjection p(kW, kH, 120.0, Projection::rectilinear);
+  for (const cv::Point2d q : {cv::Point2d(480, 270), cv::Point2d(850, 270), cv::Point2d(700, 60)}) {
+    const cv::Vec2d ppd = p.local_pixels_per_degree(q);
+    EXPECT_NEAR(ppd[0] * kPinhole.angle_deg(q - cv::Point2d(0.5, 0), q + cv::Point2d(0.5, 0)), 1.0, 1e-3);
+    EXPECT_NEAR(ppd[1] * kPinhole.angle_deg(q - cv::Point2d(0, 0.5), q + cv::Point2d(0, 0.5)), 1.0, 1e-3);
+  }
+  double sr = 0.0;
+  const cv::Mat w = p.solid_angle_weights();
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      sr += kPinhole.pixel_sr(x, y);
+      if ((x * 7 + y * 13) % 997 == 0)
+        ASSERT_NEAR(w.at<float>(y, x), kPinhole.pixel_sr(x, y) / kPinhole.pixel_sr(kW / 2, kH / 2), 1e-3);
+    }
+  EXPECT_NEAR(p.solid_angle_deg2() / (sr * std::pow(180.0 / M_PI, 2)), 1.0, 1e-4);
+}
+
+// A small light 50 deg off axis lands on the plane with its flux (luminance
+// times solid angle) kept, and a uniform frame reads uniform.
+TEST(FrameProjection, CarryingAFrameIntoThePlaneKeepsItsLight) {
+  const FrameProjection p(kW, kH, 120.0, Projection::rectilinear);
+  cv::Mat frame(kH, kW, CV_32F, cv::Scalar(0.0));
+  const int lx = int(kPinhole.x_at_deg(50.0));
+  frame(cv::Rect(lx - 2, kH / 2 - 2, 5, 5)).setTo(1000.0);
+  double frame_flux = 0.0;
+  for (int y = kH / 2 - 2; y <= kH / 2 + 2; ++y)
+    for (int x = lx - 2; x <= lx + 2; ++x) frame_flux += 1000.0 * kPinhole.pixel_sr(x, y);
+  const double plane_pixel_sr = std::pow(M_PI / 180.0 / p.pixels_per_degree(), 2);
+  const double plane_flux = cv::sum(p.to_plane_flux(frame))[0] * plane_pixel_sr;
+  EXPECT_NEAR(plane_flux / frame_flux, 1.0, 0.03);
+  const cv::Mat ones(kH, kW, CV_32FC3, cv::Scalar::all(2.0));
+  const cv::Mat mean = p.to_plane_mean(ones, cv::Scalar::all(-1.0));
+  EXPECT_FLOAT_EQ(mean.at<cv::Vec3f>(mean.rows / 2, mean.cols / 2)[1], 2.0f);
+  EXPECT_FLOAT_EQ(mean.at<cv::Vec3f>(0, mean.cols / 2)[0], 2.0f) << "the top edge's middle is inside";
+  EXPECT_FLOAT_EQ(mean.at<cv::Vec3f>(0, 0)[0], -1.0f) << "the plane's corner lies beyond the frame's";
+}
+
+// Seen from a gaze 40 deg off axis, every frame point lies its true angle
+// from the gaze (in any direction: an eye's rotation, not the plane's
+// stretch), to 0.01 px between the exactly computed nodes.
+TEST(FrameProjection, GazePositionsAreTrueAnglesFromTheGaze) {
+  const FrameProjection p(kW, kH, 120.0, Projection::rectilinear);
+  const cv::Point2d gaze(kPinhole.x_at_deg(40.0), 200.0), origin(1000.0, 700.0);
+  const cv::Mat pos = p.gaze_positions(gaze, p.frame_size(), 0.5, origin);
+  for (int y = 3; y < kH; y += 61)
+    for (int x = 5; x < kW; x += 73) {
+      const cv::Vec2f q = pos.at<cv::Vec2f>(y, x);
+      const double angle = kPinhole.angle_deg(gaze, {x + 0.5, y + 0.5});
+      ASSERT_NEAR(std::hypot(q[0] - origin.x, q[1] - origin.y), 0.5 * angle * p.pixels_per_degree(), 0.01)
+          << "pixel " << x << ", " << y;
+    }
+  // From the centre, they are the plane's positions.
+  const cv::Point2d middle(0.5 * kW, 0.5 * kH);
+  const cv::Mat central = p.gaze_positions(middle, p.frame_size(), 1.0, p.to_plane(middle));
+  EXPECT_LT(cv::norm(central, p.plane_positions(), cv::NORM_INF), 0.01);
+}
+
+TEST(FrameProjection, ThePlaneIsTheSameWhateverTheThreadCount) {
+  const FrameProjection p(kW, kH, 120.0, Projection::rectilinear);
+  cv::Mat frame(kH, kW, CV_32FC3);
+  cv::randu(frame, cv::Scalar::all(0.0), cv::Scalar::all(100.0));
+  const int threads = cv::getNumThreads();
+  cv::setNumThreads(1);
+  const cv::Mat one = p.to_plane_flux(frame), one_small = p.to_plane_mean(frame, cv::Scalar::all(0), {300, 200});
+  cv::setNumThreads(std::max(2, threads));
+  const cv::Mat many = p.to_plane_flux(frame), many_small = p.to_plane_mean(frame, cv::Scalar::all(0), {300, 200});
+  cv::setNumThreads(threads);
+  EXPECT_EQ(cv::norm(one, many, cv::NORM_INF), 0.0);
+  EXPECT_EQ(cv::norm(one_small, many_small, cv::NORM_INF), 0.0);
+}
+
+TEST(FrameProjection, AnEquidistantFrameIsItsOwnPlane) {
+  const FrameProjection p(kW, kH, 120.0, Projection::equidistant);
+  EXPECT_TRUE(p.identity());
+  EXPECT_DOUBLE_EQ(p.pixels_per_degree(), kW / 120.0);
+  EXPECT_EQ(p.plane_size(), cv::Size(kW, kH));
+  EXPECT_EQ(p.to_plane({12.5, 40.0}), cv::Point2d(12.5, 40.0));
+}
+
+}  // namespace
+}  // namespace eyestream::pipeline
