@@ -69,7 +69,8 @@ struct Source {
 
 }  // namespace
 
-SplitConvolver::SplitConvolver(int width, int height, double ppd, int factor, const EyeOptics& optics)
+SplitConvolver::SplitConvolver(int width, int height, double ppd, int factor, const EyeOptics& optics,
+                               bool with_centre)
     : width_(width), height_(height), factor_(std::max(factor, 2)), radius_(8 * factor_) {
   const int f1 = factor_, f2 = 4 * factor_;
   const int padded_w = (width + f2 - 1) / f2 * f2, padded_h = (height + f2 - 1) / f2 * f2;
@@ -78,7 +79,10 @@ SplitConvolver::SplitConvolver(int width, int height, double ppd, int factor, co
   // would blur) and where its blocks are small against the PSF's change.
   const double r0 = radius_, r1 = std::max(16.0 * f2, 2.0 * kHaloOuterDeg * ppd);
   near_ = build_component_kernels(radius_ + 1, radius_ + 1, ppd, optics);
-  for (cv::Mat* k : components(near_)) apply_window(*k, 1.0, r0, false);
+  for (cv::Mat* k : components(near_)) {
+    apply_window(*k, 1.0, r0, false);
+    if (!with_centre) k->at<double>(near_.centre()) = 0.0;
+  }
   near_fft_ = std::make_unique<FftConvolver>(near_, width, height);
   // Middle: K (w_1 - w_0), reaching R_1 / f1 of its pixels.
   const int reach = int(std::ceil(r1 / f1));

@@ -32,8 +32,11 @@ namespace eyestream::glare {
 class SplitConvolver {
  public:
   // For width x height frames at pixels_per_degree; `factor` >= 2 is the
-  // middle level's reduction, R_0 = 8 factor pixels.
-  SplitConvolver(int width, int height, double pixels_per_degree, int factor, const EyeOptics& optics = EyeOptics());
+  // middle level's reduction, R_0 = 8 factor pixels. Without the centre,
+  // the kernel's centre pixel is 0: only the light that leaves its pixel
+  // is spread.
+  SplitConvolver(int width, int height, double pixels_per_degree, int factor, const EyeOptics& optics = EyeOptics(),
+                 bool with_centre = true);
   ~SplitConvolver();
 
   // As FftConvolver::convolve.
@@ -41,8 +44,6 @@ class SplitConvolver {
 
   int factor() const { return factor_; }
   int near_radius() const { return radius_; }
-  // The near level's kernels: their centre pixels are the undivided ones'.
-  const ComponentKernels& near_kernels() const { return near_; }
 
  private:
   struct Level {

@@ -26,12 +26,14 @@ void splat_block(const cv::Mat& image, const cv::Mat& positions, Affine a, int r
                  const cv::Scalar& outside, const cv::Mat& multiplier, cv::Mat& out) {
   using Acc = cv::Vec<T, C + 1>;
   const int rows = std::min(kBlockRows, out.rows - r0), cols = out.cols;
-  std::vector<Acc> sums(size_t(rows) * size_t(cols), Acc::all(0));
+  thread_local std::vector<Acc> sums;  // reused: no page faults per call
+  sums.assign(size_t(rows) * size_t(cols), Acc::all(0));
+  const float kx = float(a.kx), ky = float(a.ky), offset = float(a.offset);
   for (int y = first_row; y <= last_row; ++y) {
     const T* in = image.ptr<T>(y);
     const cv::Vec2f* pos = positions.ptr<cv::Vec2f>(y);
     for (int x = 0; x < image.cols; ++x) {
-      const double tx = pos[x][0] * a.kx + a.offset, ty = pos[x][1] * a.ky + a.offset;
+      const float tx = pos[x][0] * kx + offset, ty = pos[x][1] * ky + offset;
       const int i0 = int(std::floor(tx)), j0 = int(std::floor(ty));
       if (j0 + 1 < r0 || j0 >= r0 + rows) continue;
       const T fx = T(tx - i0), fy = T(ty - j0);
@@ -95,6 +97,46 @@ void splat_rows(const cv::Mat& image, const cv::Mat& positions, Affine a, const 
   });
 }
 
+// The plane's fixed splat of a CV_32FC3 frame: the sums of b L into a
+// bordered accumulator (no bounds checks), times `norm` (the plane pixel's
+// solid-angle ratio over its sum of b, computed once).
+void splat_fixed(const cv::Mat& frame, const cv::Mat& positions, const std::vector<int>& top,
+                 const std::vector<int>& bottom, const cv::Mat& norm, cv::Mat& out) {
+  const int cols = out.cols, stride = cols + 2;
+  const int blocks = (out.rows + kBlockRows - 1) / kBlockRows;
+  cv::parallel_for_(cv::Range(0, blocks), [&](const cv::Range& r) {
+    thread_local std::vector<cv::Vec3f> sums;
+    for (int b = r.start; b < r.end; ++b) {
+      const int r0 = b * kBlockRows, rows = std::min(kBlockRows, out.rows - r0);
+      sums.assign(size_t(rows + 2) * size_t(stride), cv::Vec3f(0, 0, 0));  // rows r0 - 1 .. r0 + rows
+      for (int y = 0; y < frame.rows; ++y) {
+        if (bottom[size_t(y)] < r0 || top[size_t(y)] >= r0 + rows) continue;
+        const cv::Vec3f* in = frame.ptr<cv::Vec3f>(y);
+        const cv::Vec2f* pos = positions.ptr<cv::Vec2f>(y);
+        for (int x = 0; x < frame.cols; ++x) {
+          // Plane positions are >= 0: truncation floors tx + 1 and ty + 1.
+          const float tx = pos[x][0] + 0.5f, ty = pos[x][1] + 0.5f;
+          const int i0 = int(tx) - 1, j0 = int(ty) - 1;
+          if (j0 + 1 < r0 || j0 >= r0 + rows) continue;
+          const float fx = tx - float(i0 + 1), fy = ty - float(j0 + 1);
+          cv::Vec3f* s = &sums[size_t(j0 - r0 + 1) * size_t(stride) + size_t(i0 + 1)];
+          const cv::Vec3f top_row = in[x] * (1.0f - fy), bottom_row = in[x] * fy;
+          s[0] += top_row * (1.0f - fx);
+          s[1] += top_row * fx;
+          s[stride] += bottom_row * (1.0f - fx);
+          s[stride + 1] += bottom_row * fx;
+        }
+      }
+      for (int j = 0; j < rows; ++j) {
+        cv::Vec3f* o = out.ptr<cv::Vec3f>(r0 + j);
+        const float* n = norm.ptr<float>(r0 + j);
+        const cv::Vec3f* s = &sums[size_t(j + 1) * size_t(stride) + 1];
+        for (int i = 0; i < cols; ++i) o[i] = s[i] * n[i];
+      }
+    }
+  });
+}
+
 cv::Mat splat_any(const cv::Mat& image, const cv::Mat& positions, Affine a, cv::Size size, const cv::Scalar& outside,
                   const cv::Mat& multiplier) {
   CV_Assert(positions.type() == CV_32FC2 && positions.size() == image.size());
@@ -142,6 +184,29 @@ FrameProjection::FrameProjection(int width, int height, double fov_deg, Projecti
     for (int u = 0; u < plane_.width; ++u) {
       const double theta = std::hypot(u + 0.5 - 0.5 * plane_.width, v + 0.5 - 0.5 * plane_.height) / f_px_;
       flux_ratio_.at<float>(v, u) = float(theta > 0.0 ? std::sin(theta) / theta : 1.0);
+    }
+  // The fixed splat's row reach and normalisation (the sum of b over the
+  // frame pixels landing on each plane pixel: the same every frame).
+  flux_top_.resize(size_t(height));
+  flux_bottom_.resize(size_t(height));
+  for (int y = 0; y < height; ++y) {
+    float low = 1e30f, high = -1e30f;
+    for (int x = 0; x < width; ++x) {
+      low = std::min(low, positions_.at<cv::Vec2f>(y, x)[1]);
+      high = std::max(high, positions_.at<cv::Vec2f>(y, x)[1]);
+    }
+    flux_top_[size_t(y)] = int(std::floor(low - 0.5f));
+    flux_bottom_[size_t(y)] = int(std::floor(high - 0.5f)) + 1;
+  }
+  const cv::Mat weight = splat_any(cv::Mat(frame_, CV_32FC1, cv::Scalar(1.0)), positions_, Affine{1, 1, -0.5}, plane_,
+                                   cv::Scalar(0.0), cv::Mat());  // 1 where covered, 0 beyond
+  cv::Mat ones(frame_, CV_32FC3, cv::Scalar::all(1.0)), sums(plane_, CV_32FC3);
+  splat_fixed(ones, positions_, flux_top_, flux_bottom_, cv::Mat(plane_, CV_32F, cv::Scalar(1.0)), sums);
+  flux_norm_.create(plane_, CV_32F);
+  for (int v = 0; v < plane_.height; ++v)
+    for (int u = 0; u < plane_.width; ++u) {
+      const float b = sums.at<cv::Vec3f>(v, u)[0];
+      flux_norm_.at<float>(v, u) = weight.at<float>(v, u) > 0.0f && b > 0.0f ? flux_ratio_.at<float>(v, u) / b : 0.0f;
     }
 }
 
@@ -211,7 +276,11 @@ cv::Mat FrameProjection::to_plane_mean(const cv::Mat& frame, const cv::Scalar& o
 cv::Mat FrameProjection::to_plane_flux(const cv::Mat& frame) const {
   CV_Assert(frame.size() == frame_);
   if (identity()) return frame;
-  return splat_any(frame, positions_, Affine{1, 1, -0.5}, plane_, cv::Scalar::all(0.0), flux_ratio_);
+  if (frame.type() != CV_32FC3)
+    return splat_any(frame, positions_, Affine{1, 1, -0.5}, plane_, cv::Scalar::all(0.0), flux_ratio_);
+  cv::Mat out(plane_, CV_32FC3);
+  splat_fixed(frame, positions_, flux_top_, flux_bottom_, flux_norm_, out);
+  return out;
 }
 
 cv::Mat FrameProjection::gaze_positions(cv::Point2d gaze, cv::Size size, double scale, cv::Point2d origin) const {

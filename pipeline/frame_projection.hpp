@@ -24,6 +24,7 @@
 
 #include <opencv2/core.hpp>
 #include <string>
+#include <vector>
 
 namespace eyestream::pipeline {
 
@@ -93,7 +94,9 @@ class FrameProjection {
   double fov_deg_, f_px_ = 0.0, ppd_;
   cv::Mat positions_;           // CV_32FC2, frame-sized
   cv::Mat remap1_, remap2_;     // positions as cv::remap's fixed-point maps
-  cv::Mat flux_ratio_;          // CV_32F, plane-sized: sin(theta) / theta, 0 beyond the frame
+  cv::Mat flux_ratio_;          // CV_32F, plane-sized: sin(theta) / theta
+  cv::Mat flux_norm_;           // CV_32F, plane-sized: flux_ratio_ over the sum of splat weights; 0 beyond the frame
+  std::vector<int> flux_top_, flux_bottom_;  // per frame row: the plane rows its splat reaches
 };
 
 }  // namespace eyestream::pipeline

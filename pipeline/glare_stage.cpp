@@ -21,20 +21,35 @@ GlareStage::GlareStage(const Plan& plan) : plan_(plan), optics_(plan.eye_optics(
     return;
   }
   // The full kernels also give the report its veil (veiling_luminance.hpp).
+  // On an angle plane the engines spread only the light that leaves its
+  // pixel (their kernels' centre pixel 0); the rest stays on the frame's
+  // pixels (spread()).
+  const bool with_centre = plan.projection->identity();
+  const glare::ComponentKernels centre = glare::build_component_kernels(1, 1, plan.pixels_per_degree, optics_);
+  for (int ch = 0; ch < 3; ++ch) {
+    centre_[0][ch] = centre.core.at<double>(0, 0);
+    centre_[1][ch] = centre.inner.at<double>(0, 0);
+    centre_[2][ch] = centre.outer.at<double>(0, 0);
+    centre_[3][ch] = centre.halo[ch].at<double>(0, 0);
+  }
   if (plan.glare.tail_factor <= 1 || plan.report)
     kernels_ = glare::build_component_kernels(plane.width, plane.height, plan.pixels_per_degree, optics_);
-  if (plan.glare.tail_factor > 1)
+  if (plan.glare.tail_factor > 1) {
     split_ = std::make_unique<glare::SplitConvolver>(plane.width, plane.height, plan.pixels_per_degree,
-                                                     plan.glare.tail_factor, optics_);
-  else
+                                                     plan.glare.tail_factor, optics_, with_centre);
+  } else {
+    // The engine copies the kernels' spectra: the centre is dropped for it
+    // and put back for the report.
+    const cv::Point c = kernels_.centre();
+    cv::Mat* ks[6] = {&kernels_.core, &kernels_.inner, &kernels_.outer,
+                      &kernels_.halo[0], &kernels_.halo[1], &kernels_.halo[2]};
+    double kept[6];
+    for (int i = 0; i < 6; ++i) {
+      kept[i] = ks[i]->at<double>(c);
+      if (!with_centre) ks[i]->at<double>(c) = 0.0;
+    }
     convolver_ = std::make_unique<glare::FftConvolver>(kernels_);
-  const glare::ComponentKernels& k = split_ ? split_->near_kernels() : kernels_;
-  const cv::Point c = k.centre();
-  for (int ch = 0; ch < 3; ++ch) {
-    centre_[0][ch] = k.core.at<double>(c);
-    centre_[1][ch] = k.inner.at<double>(c);
-    centre_[2][ch] = k.outer.at<double>(c);
-    centre_[3][ch] = k.halo[ch].at<double>(c);
+    for (int i = 0; i < 6; ++i) ks[i]->at<double>(c) = kept[i];
   }
   if (!plan.glare.full) return;
   // The in-frame share of each component, by the engine itself, so that a
@@ -77,17 +92,15 @@ cv::Mat GlareStage::spread(const cv::Mat& rgb, const glare::PsfWeights& w) const
   if (p.identity()) return spread_plane(rgb, w);
   // The plane carries the light that leaves its pixel; the light the PSF
   // keeps there stays on the frame's pixels, sharp.
+  const cv::Vec3f kept = kept_share(w);
   const cv::Mat flux = p.to_plane_flux(rgb);
   cv::Mat scattered = spread_plane(flux, w);
-  const cv::Vec3f kept = kept_share(w);
-  cv::parallel_for_(cv::Range(0, scattered.rows), [&](const cv::Range& rows) {
-    for (int y = rows.start; y < rows.end; ++y) {
-      cv::Vec3f* s = scattered.ptr<cv::Vec3f>(y);
-      const cv::Vec3f* f = flux.ptr<cv::Vec3f>(y);
-      for (int x = 0; x < scattered.cols; ++x)
-        for (int c = 0; c < 3; ++c) s[x][c] = std::max(0.0f, s[x][c] - kept[c] * f[x][c]);
-    }
-  });
+  if (plan_.glare.gaussian) {  // a blur keeps its centre: take it out
+    cv::Mat centre;
+    cv::multiply(flux, cv::Scalar(kept[0], kept[1], kept[2]), centre);
+    scattered -= centre;
+    scattered = cv::max(scattered, 0.0);
+  }
   cv::Mat out = p.to_frame_image(scattered);
   cv::parallel_for_(cv::Range(0, out.rows), [&](const cv::Range& rows) {
     for (int y = rows.start; y < rows.end; ++y) {
