@@ -5,6 +5,7 @@
 // continue on indented lines: samples are read only from lines that start
 // with a digit in column 0 inside START ... END recording blocks (a file
 // with no START line, an excerpt, is read whole).
+#include <algorithm>
 #include <cctype>
 #include <optional>
 #include <sstream>
@@ -16,7 +17,10 @@
 namespace eyestream::io {
 
 std::vector<GazeSample> parse_eyelink(const std::string& text, const std::string& name, const GazeImportOptions& o,
-                                      std::optional<double>* sync_s) {
+                                      GazeNotes& notes, std::optional<double>* sync_s) {
+  if (o.eye != "left" && o.eye != "right" && o.eye != "average")
+    throw UsageError("--gaze-eye must be left, right or average, not '" + o.eye + "'");
+  bool binocular = false, said = false;
   std::istringstream in(text);
   std::string line;
   int line_no = 0;
@@ -49,6 +53,11 @@ std::vector<GazeSample> parse_eyelink(const std::string& text, const std::string
     }
     if (w[0] == "START" || w[0] == "END") {
       recording = w[0] == "START" || !blocks;
+      if (w[0] == "START") {
+        binocular = std::find(w.begin(), w.end(), "LEFT") != w.end() && std::find(w.begin(), w.end(), "RIGHT") != w.end();
+        if (binocular && !said) notes.push_back("EyeLink: binocular, " + (o.eye == "average" ? std::string("the two eyes averaged") : o.eye + " eye") + " (--gaze-eye)");
+        said = said || binocular;
+      }
       continue;
     }
     if (w[0] == "SBLINK" && w.size() >= 3) {
@@ -69,12 +78,21 @@ std::vector<GazeSample> parse_eyelink(const std::string& text, const std::string
     double t, x, y;
     if (!parse_number(w[0], t)) throw InputError(where + ": sample time '" + w[0] + "' is not a number");
     s.t_s = t * 1e-3;
-    // Left eye first, the right when the left is missing (binocular lines).
-    const bool left = w.size() >= 3 && parse_number(w[1], x) && parse_number(w[2], y);
-    const bool right = !left && w.size() >= 6 && parse_number(w[4], x) && parse_number(w[5], y);
+    // Binocular lines: "time xl yl pl xr yr pr"; the chosen eye, or the
+    // mean of the two (the one seen when the other is missing).
+    double xl, yl, xr, yr;
+    const bool left = w.size() >= 3 && parse_number(w[1], xl) && parse_number(w[2], yl);
+    const bool right = binocular && w.size() >= 6 && parse_number(w[4], xr) && parse_number(w[5], yr);
+    const bool use_left = left && (!binocular || o.eye != "right"), use_right = right && o.eye != "left";
+    if (use_left && use_right)
+      x = 0.5 * (xl + xr), y = 0.5 * (yl + yr);
+    else if (use_left)
+      x = xl, y = yl;
+    else if (use_right)
+      x = xr, y = yr;
     if (blinking)
       s.state = EyeState::kClosed;
-    else if (!left && !right)
+    else if (!use_left && !use_right)
       s.state = EyeState::kLost;
     else
       s.x = x, s.y = y;

@@ -1,9 +1,12 @@
 #include "io/gaze_import.hpp"
 
 #include <algorithm>
+#include <filesystem>
+#include <optional>
 #include <fstream>
 #include <sstream>
 
+#include "io/delimited_table.hpp"
 #include "io/error.hpp"
 #include "io/staged_file.hpp"
 
@@ -11,8 +14,11 @@ namespace eyestream::io {
 
 GazeFormat detect_gaze_format(const std::string& text) {
   const std::string head = text.substr(0, std::min<size_t>(text.size(), 4096));
-  if (head.find("gaze_timestamp") != std::string::npos && head.find("norm_pos_x") != std::string::npos)
+  // Pupil Player: gaze_timestamp,world_index,... (older: timestamp,index,...).
+  if (head.find("norm_pos_x") != std::string::npos && head.find("timestamp") != std::string::npos)
     return GazeFormat::kPupilCore;
+  if (head.find("timestamp [ns]") != std::string::npos && head.find("gaze position on surface x") != std::string::npos)
+    return GazeFormat::kNeonSurface;
   if (head.find("timestamp [ns]") != std::string::npos && head.find("gaze x [px]") != std::string::npos)
     return GazeFormat::kNeon;
   if (head.find("Recording timestamp") != std::string::npos && head.find('\t') != std::string::npos)
@@ -23,10 +29,56 @@ GazeFormat detect_gaze_format(const std::string& text) {
   return GazeFormat::kNative;
 }
 
-std::vector<GazeSample> parse_gaze(const std::string& text, const std::string& name, const GazeImportOptions& o,
-                                   GazeFormat* format_read) {
+namespace {
+
+// The text without a UTF-8 byte-order mark and with LF line ends.
+std::string plain_text(const std::string& raw) {
+  std::string text = raw.rfind("\xEF\xBB\xBF", 0) == 0 ? raw.substr(3) : raw;
+  text.erase(std::remove(text.begin(), text.end(), '\r'), text.end());
+  return text;
+}
+
+}  // namespace
+
+void keep_recording(DelimitedTable& t, int column, const std::string& choice, const std::string& name,
+                    GazeNotes& notes) {
+  if (column < 0) {
+    if (!choice.empty()) notes.push_back("--gaze-recording: " + name + " names no recordings; read whole");
+    return;
+  }
+  std::vector<std::string> names;
+  for (const std::vector<std::string>& row : t.rows) {
+    const std::string id = column < int(row.size()) ? row[size_t(column)] : "";
+    if (std::find(names.begin(), names.end(), id) == names.end()) names.push_back(id);
+  }
+  std::string list;
+  for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+  const bool chosen = std::find(names.begin(), names.end(), choice) != names.end();
+  if (!choice.empty() && !chosen)
+    throw InputError(name + ": no recording '" + choice + "' (--gaze-recording); it holds " + list);
+  if (choice.empty() && names.size() > 1)
+    throw InputError(name + ": holds " + std::to_string(names.size()) + " recordings (" + list +
+                     "); choose one with --gaze-recording");
+  if (!chosen) return;
+  DelimitedTable kept = t;
+  kept.rows.clear();
+  kept.line_numbers.clear();
+  for (size_t r = 0; r < t.rows.size(); ++r)
+    if (column < int(t.rows[r].size()) && t.rows[r][size_t(column)] == choice) {
+      kept.rows.push_back(t.rows[r]);
+      kept.line_numbers.push_back(t.line_numbers[r]);
+    }
+  if (names.size() > 1) notes.push_back("recording " + choice + " of " + std::to_string(names.size()));
+  t = std::move(kept);
+}
+
+std::vector<GazeSample> parse_gaze(const std::string& raw, const std::string& name, const GazeImportOptions& o,
+                                   GazeRead* read) {
+  const std::string text = plain_text(raw);
   const GazeFormat format = o.format == GazeFormat::kAuto ? detect_gaze_format(text) : o.format;
-  if (format_read) *format_read = format;
+  GazeRead local;
+  GazeRead& info = read ? *read : local;
+  info.format = format;
   if (format == GazeFormat::kNative) {
     std::vector<GazeSample> s = parse_gaze_csv(text, name, o.units, o.frame_width, o.frame_height);
     for (GazeSample& g : s) g.t_s += o.offset_s;
@@ -35,11 +87,19 @@ std::vector<GazeSample> parse_gaze(const std::string& text, const std::string& n
   if (!o.sync_message.empty() && format != GazeFormat::kEyeLink)
     throw UsageError("--gaze-sync-message: only EyeLink ASC files carry messages (use --gaze-sync)");
   std::optional<double> message_time;
-  std::vector<GazeSample> s = format == GazeFormat::kPupilCore ? parse_pupil_core(text, name, o)
-                              : format == GazeFormat::kNeon    ? parse_neon(text, name, o)
-                              : format == GazeFormat::kTobii   ? parse_tobii(text, name, o)
-                                                               : parse_eyelink(text, name, o, &message_time);
+  GazeNotes& notes = info.notes;
+  std::vector<GazeSample> s = format == GazeFormat::kPupilCore     ? parse_pupil_core(text, name, o, notes)
+                              : format == GazeFormat::kNeon        ? parse_neon(text, name, o, notes)
+                              : format == GazeFormat::kNeonSurface ? parse_neon_surface(text, name, o, notes)
+                              : format == GazeFormat::kTobii       ? parse_tobii(text, name, o, notes)
+                                                                   : parse_eyelink(text, name, o, notes, &message_time);
   if (s.empty()) throw InputError(name + ": no gaze samples");
+  const bool pupil_labs =
+      format == GazeFormat::kPupilCore || format == GazeFormat::kNeon || format == GazeFormat::kNeonSurface;
+  if (pupil_labs && !o.blinks_text.empty()) {
+    const size_t n = apply_blinks(plain_text(o.blinks_text), o.blinks_name, o.recording, s);
+    notes.push_back(std::to_string(n) + " blinks from " + o.blinks_name);
+  }
   std::stable_sort(s.begin(), s.end(), [](const GazeSample& a, const GazeSample& b) { return a.t_s < b.t_s; });
   std::vector<GazeSample> unique;
   for (const GazeSample& g : s) {
@@ -53,13 +113,33 @@ std::vector<GazeSample> parse_gaze(const std::string& text, const std::string& n
   return unique;
 }
 
-std::vector<GazeSample> read_gaze(const std::string& path, const GazeImportOptions& o, GazeFormat* format) {
+namespace {
+
+std::optional<std::string> read_text(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open gaze log");
-  protect_input(path);
+  if (!in) return std::nullopt;
   std::stringstream ss;
   ss << in.rdbuf();
-  return parse_gaze(ss.str(), path, o, format);
+  return ss.str();
+}
+
+}  // namespace
+
+std::vector<GazeSample> read_gaze(const std::string& path, const GazeImportOptions& options, GazeRead* read) {
+  const std::optional<std::string> text = read_text(path);
+  if (!text) throw InputError(path + ": cannot open gaze log");
+  protect_input(path);
+  GazeImportOptions o = options;
+  // Pupil Player and Neon export blinks beside the gaze.
+  const std::filesystem::path blinks = std::filesystem::path(path).parent_path() / "blinks.csv";
+  if (o.blinks_text.empty() && std::filesystem::path(path).filename() != "blinks.csv") {
+    const std::optional<std::string> b = read_text(blinks);
+    if (b) {
+      o.blinks_text = *b;
+      o.blinks_name = blinks.string();
+    }
+  }
+  return parse_gaze(*text, path, o, read);
 }
 
 }  // namespace eyestream::io

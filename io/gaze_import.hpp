@@ -11,7 +11,7 @@
 
 namespace eyestream::io {
 
-enum class GazeFormat { kAuto, kNative, kPupilCore, kNeon, kTobii, kEyeLink };
+enum class GazeFormat { kAuto, kNative, kPupilCore, kNeon, kNeonSurface, kTobii, kEyeLink };
 
 struct GazeImportOptions {
   GazeFormat format = GazeFormat::kAuto;
@@ -25,6 +25,21 @@ struct GazeImportOptions {
   double offset_s = 0.0;             // added to every time after alignment
   std::optional<double> sync_clock;  // export clock (its own unit, seconds) at frame 0; default the first sample
   std::string sync_message;          // EyeLink: the first MSG line holding this text is frame 0
+  // An export holding several recordings (Neon, Tobii) is refused naming
+  // them unless this names the one to read.
+  std::string recording;
+  std::string eye = "average";  // EyeLink binocular files: left, right or average
+  // Pupil Core and Neon: the blinks.csv beside the export (read_gaze fills
+  // these when it is there); its blinks close the eye.
+  std::string blinks_text, blinks_name;
+};
+
+// What a read found beyond the samples: the format, and what it assumed or
+// took from elsewhere ("Tobii timestamps without a unit: microseconds, from
+// their spacing"), for the run's gaze summary.
+struct GazeRead {
+  GazeFormat format = GazeFormat::kAuto;
+  std::vector<std::string> notes;
 };
 
 // Reads `path` in the given or detected format. Exports whose clock is
@@ -32,13 +47,14 @@ struct GazeImportOptions {
 // sample) is time 0; then offset_s is added. Export samples are ordered by
 // time; of samples at the same time the last is kept. Malformed lines are
 // an InputError naming the file and line.
-// `format`, when given, receives the format read (the detected one for kAuto).
-std::vector<GazeSample> read_gaze(const std::string& path, const GazeImportOptions& options,
-                                  GazeFormat* format = nullptr);
+// A UTF-8 byte-order mark and CRLF line ends are accepted in every format.
+// `read`, when given, receives the format read (the detected one for
+// kAuto) and the notes.
+std::vector<GazeSample> read_gaze(const std::string& path, const GazeImportOptions& options, GazeRead* read = nullptr);
 
 // The same for text in memory; `name` stands for the file in messages.
 std::vector<GazeSample> parse_gaze(const std::string& text, const std::string& name, const GazeImportOptions& options,
-                                   GazeFormat* format = nullptr);
+                                   GazeRead* read = nullptr);
 
 // The format the text's header looks like (kNative when unsure).
 GazeFormat detect_gaze_format(const std::string& text);
@@ -53,12 +69,31 @@ inline void place(GazeSample& s, bool seen, double x, double y, double sx, doubl
   s.y = y * sy;
 }
 
-// Per-format parsers: samples with the export's own clock in seconds.
-std::vector<GazeSample> parse_pupil_core(const std::string& text, const std::string& name, const GazeImportOptions& o);
-std::vector<GazeSample> parse_neon(const std::string& text, const std::string& name, const GazeImportOptions& o);
-std::vector<GazeSample> parse_tobii(const std::string& text, const std::string& name, const GazeImportOptions& o);
+// Per-format parsers: samples with the export's own clock in seconds;
+// what they assume goes to `notes`.
+using GazeNotes = std::vector<std::string>;
+std::vector<GazeSample> parse_pupil_core(const std::string& text, const std::string& name, const GazeImportOptions& o,
+                                         GazeNotes& notes);
+std::vector<GazeSample> parse_neon(const std::string& text, const std::string& name, const GazeImportOptions& o,
+                                   GazeNotes& notes);
+std::vector<GazeSample> parse_neon_surface(const std::string& text, const std::string& name,
+                                           const GazeImportOptions& o, GazeNotes& notes);
+std::vector<GazeSample> parse_tobii(const std::string& text, const std::string& name, const GazeImportOptions& o,
+                                    GazeNotes& notes);
 // `sync_s` receives the time of the first MSG holding o.sync_message.
 std::vector<GazeSample> parse_eyelink(const std::string& text, const std::string& name, const GazeImportOptions& o,
-                                      std::optional<double>* sync_s = nullptr);
+                                      GazeNotes& notes, std::optional<double>* sync_s = nullptr);
+
+// Keeps the rows of one recording of a table whose `column` (-1: none)
+// names recordings: the one `choice` names, or the only one; several and
+// no choice (or a choice not there) is an InputError naming them.
+struct DelimitedTable;
+void keep_recording(DelimitedTable& t, int column, const std::string& choice, const std::string& name,
+                    GazeNotes& notes);
+
+// Marks the samples inside the blinks of a Pupil Core or Neon blinks.csv
+// (export clock) closed; returns how many blinks it holds.
+size_t apply_blinks(const std::string& text, const std::string& name, const std::string& recording,
+                    std::vector<GazeSample>& samples);
 
 }  // namespace eyestream::io

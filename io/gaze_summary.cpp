@@ -9,6 +9,7 @@ std::string gaze_format_name(GazeFormat f) {
   switch (f) {
     case GazeFormat::kPupilCore: return "pupil-core";
     case GazeFormat::kNeon: return "neon";
+    case GazeFormat::kNeonSurface: return "neon-surface";
     case GazeFormat::kTobii: return "tobii";
     case GazeFormat::kEyeLink: return "eyelink";
     default: return "native";

@@ -1,22 +1,56 @@
 // Tobii Pro Lab TSV exports: Recording timestamp (ms or us, per the
-// header), Gaze point X/Y in pixels of the recorded media, Validity
-// left/right; decimal commas accepted.
+// header; without a unit, from the samples' spacing), Gaze point X/Y in
+// pixels of the recorded media, Validity left/right; decimal commas
+// accepted; one recording of several (Recording name).
+#include <algorithm>
+#include <cmath>
+
 #include "io/delimited_table.hpp"
 #include "io/error.hpp"
 #include "io/gaze_import.hpp"
 
 namespace eyestream::io {
 
-std::vector<GazeSample> parse_tobii(const std::string& text, const std::string& name, const GazeImportOptions& o) {
-  const DelimitedTable t = parse_delimited(text, '\t');
+namespace {
+
+// The median spacing of a column's successive numbers (0 when fewer than two).
+double median_spacing(const DelimitedTable& t, int c) {
+  std::vector<double> values, steps;
+  for (const std::vector<std::string>& row : t.rows) {
+    double v;
+    if (c < int(row.size()) && parse_number(row[size_t(c)], v, true)) values.push_back(v);
+  }
+  for (size_t i = 1; i < values.size(); ++i)
+    if (values[i] > values[i - 1]) steps.push_back(values[i] - values[i - 1]);
+  if (steps.empty()) return 0.0;
+  std::nth_element(steps.begin(), steps.begin() + long(steps.size() / 2), steps.end());
+  return steps[steps.size() / 2];
+}
+
+}  // namespace
+
+std::vector<GazeSample> parse_tobii(const std::string& text, const std::string& name, const GazeImportOptions& o,
+                                    GazeNotes& notes) {
+  DelimitedTable t = parse_delimited(text, '\t');
+  keep_recording(t, t.column("Recording name"), o.recording, name, notes);
   const int ct = t.column("Recording timestamp", true), cx = t.column("Gaze point X", true),
             cy = t.column("Gaze point Y", true);
   if (ct < 0 || cx < 0 || cy < 0)
     throw InputError(name + ":" + std::to_string(t.header_line) +
                      ": a Tobii export needs Recording timestamp, Gaze point X and Gaze point Y columns");
   const std::string& unit = t.header[size_t(ct)];
-  const bool micro = unit.find("us]") != std::string::npos || unit.find("\xce\xbcs]") != std::string::npos ||
-                     unit.find("\xc2\xb5s]") != std::string::npos;
+  bool micro = unit.find("us]") != std::string::npos || unit.find("\xce\xbcs]") != std::string::npos ||
+               unit.find("\xc2\xb5s]") != std::string::npos;
+  if (unit.find('[') == std::string::npos) {
+    // No unit: Tobii trackers sample at 30 to 1200 Hz, 0.8 to 33 ms apart,
+    // so a median spacing of 200 or more can only be microseconds.
+    const double spacing = median_spacing(t, ct);
+    micro = spacing >= 200.0;
+    char note[160];
+    std::snprintf(note, sizeof note, "Recording timestamp has no unit: %s, from the samples' median spacing of %g",
+                  micro ? "microseconds" : "milliseconds", spacing);
+    notes.push_back(note);
+  }
   const double to_s = micro ? 1e-6 : 1e-3;
   const int cl = t.column("Validity left"), cr = t.column("Validity right");
   const double sx = o.source_width > 0 ? double(o.frame_width) / o.source_width : 1.0;

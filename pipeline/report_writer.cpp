@@ -106,7 +106,8 @@ std::vector<io::StagedFile> ReportWriter::stage() const {
 void ReportWriter::set_gaze(const io::GazeSummary& g) {
   gaze_ = {{"format", g.format},         {"samples", g.samples},         {"median_interval_s", g.median_interval_s},
            {"first_s", g.first_s},       {"last_s", g.last_s},           {"lost_share", g.lost_share},
-           {"closed_share", g.closed_share}, {"off_frame_share", g.off_frame_share}, {"warnings", g.warnings}};
+           {"closed_share", g.closed_share}, {"off_frame_share", g.off_frame_share}, {"warnings", g.warnings},
+           {"notes", g.notes}};
 }
 
 nlohmann::json ReportWriter::save() const {

@@ -56,6 +56,7 @@ io::GazeImportOptions gaze_import_options(const Settings& s, const io::SourceInf
   o.format = f == "native"       ? io::GazeFormat::kNative
              : f == "pupil-core" ? io::GazeFormat::kPupilCore
              : f == "neon"       ? io::GazeFormat::kNeon
+             : f == "neon-surface" ? io::GazeFormat::kNeonSurface
              : f == "tobii"      ? io::GazeFormat::kTobii
              : f == "eyelink"    ? io::GazeFormat::kEyeLink
                                  : io::GazeFormat::kAuto;
@@ -68,6 +69,8 @@ io::GazeImportOptions gaze_import_options(const Settings& s, const io::SourceInf
   o.offset_s = s.gaze_offset_s;
   o.sync_clock = s.gaze_sync_s;
   o.sync_message = s.gaze_sync_message;
+  o.recording = s.gaze_recording;
+  o.eye = s.gaze_eye;
   return o;
 }
 
@@ -89,11 +92,12 @@ LoadedGaze load_gaze(const Settings& s, const io::SourceInfo& info) {
   LoadedGaze g;
   if (s.gaze.empty()) return g;
   const io::GazeImportOptions o = gaze_import_options(s, info);
-  io::GazeFormat format = o.format;
-  g.samples = io::read_gaze(s.gaze, o, &format);
+  io::GazeRead read;
+  g.samples = io::read_gaze(s.gaze, o, &read);
   const double end_s =
       info.frame_count > 0 && info.frames_per_second > 0 ? double(info.frame_count) / info.frames_per_second : -1.0;
-  g.summary = io::summarise_gaze(g.samples, format, info.width, info.height, end_s);
+  g.summary = io::summarise_gaze(g.samples, read.format, info.width, info.height, end_s);
+  g.summary->notes = read.notes;
   return g;
 }
 
@@ -106,6 +110,7 @@ std::string describe_run(const Settings& s) {
   const LoadedGaze gaze = load_gaze(s, source->info());  // refused here as `run` would refuse it
   if (gaze.summary) {
     text += gaze.summary->line() + "\n";
+    for (const std::string& n : gaze.summary->notes) text += "gaze: " + n + "\n";
     for (const std::string& w : gaze.summary->warnings) text += "warning: " + w + "\n";
   }
   return text;
@@ -167,8 +172,11 @@ RunSummary run(const Settings& s) {
   const io::SourceInfo& info = source->info();
   const LoadedGaze gaze = load_gaze(s, info);
   const std::vector<io::GazeSample>& samples = gaze.samples;
-  if (gaze.summary)  // before the work; the summary line itself comes with the run's (RunSummary)
+  if (gaze.summary) {  // before the work; the summary line itself comes with the run's (RunSummary)
+    if (!s.quiet)
+      for (const std::string& n : gaze.summary->notes) std::fprintf(stderr, "eyestream: gaze: %s\n", n.c_str());
     for (const std::string& w : gaze.summary->warnings) std::fprintf(stderr, "eyestream: warning: %s\n", w.c_str());
+  }
   const TargetRegion target(s.target_rect, s.target_mask, cv::Size(info.width, info.height));
   check_outputs(run_outputs(s));  // before anything is written
   io::SinkOptions sink_options = s.sink;

@@ -27,7 +27,11 @@ ParamSet run_parameters(Settings& s) {
   set.add(choice("bad-pixels", "NaN or infinite pixels: clamp (shown black, counted) or fail", in, &s.bad_pixels,
                  {"clamp", "fail"}));
   set.add(choice("gaze-format", "gaze log format; auto detects it from the header", in, &s.gaze_format,
-                 {"auto", "native", "pupil-core", "neon", "tobii", "eyelink"}));
+                 {"auto", "native", "pupil-core", "neon", "neon-surface", "tobii", "eyelink"}));
+  set.add(text("gaze-recording", "Neon, Tobii: the recording to read when the export holds several", in,
+               &s.gaze_recording));
+  set.add(choice("gaze-eye", "EyeLink binocular files: the left or right eye, or their average", in, &s.gaze_eye,
+                 {"average", "left", "right"}));
   set.add(number("gaze-offset", "s", "added to every gaze time (after sync)", in, &s.gaze_offset_s, -1e6, 1e6));
   set.add(number("gaze-sync", "s", "export clock at the first frame (exports only; default: the first sample)", in,
                  &s.gaze_sync_s, -1e12, 1e12));

@@ -27,10 +27,12 @@ struct Settings {
   std::string input, gaze, output, config;
   std::string gaze_units = "px";
   std::string bad_pixels = "clamp";  // NaN or infinite pixels: clamp (show black, count) or fail
-  std::string gaze_format = "auto";  // auto, native, pupil-core, neon, tobii, eyelink
+  std::string gaze_format = "auto";  // auto, native, pupil-core, neon, neon-surface, tobii, eyelink
   double gaze_offset_s = 0.0;
   std::optional<double> gaze_sync_s;
   std::string gaze_sync_message;  // EyeLink: the first MSG holding this text is frame 0
+  std::string gaze_recording;     // Neon, Tobii: the recording to read of several
+  std::string gaze_eye = "average";  // EyeLink binocular: left, right or average
   double gaze_confidence = 0.6;
   int gaze_source_width = 0, gaze_source_height = 0;
 
