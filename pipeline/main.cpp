@@ -17,6 +17,7 @@
 #include "pipeline/compare_command.hpp"
 #include "pipeline/curves_command.hpp"
 #include "pipeline/exit_codes.hpp"
+#include "pipeline/output_paths.hpp"
 #include "pipeline/parameter.hpp"
 #include "pipeline/psf_command.hpp"
 #include "pipeline/quality_presets.hpp"
@@ -65,6 +66,8 @@ int main(int argc, char** argv) {
                       "output: video.mp4 or .mkv, frames/%05d.png, frames/%05d.exr, or - (video on standard output)")
       ->required();
   run_cmd->add_option("--config", settings.config, "JSON file of parameter values (command line wins)");
+  bool yes = false;  // -y, the short --overwrite
+  run_cmd->add_flag("-y", yes, "replace outputs that exist (as --overwrite)");
   params.bind(*run_cmd);
 
   samples::SceneOptions scene;
@@ -86,8 +89,10 @@ int main(int argc, char** argv) {
   Settings psf_settings;
   PsfRequest psf;
   ParamSet psf_params = run_parameters(psf_settings).subset({"Viewing condition", "Glare (the viewer's optics)"});
+  bool replace_files = false;  // -y for the commands that write files of their own
   CLI::App* psf_cmd = app.add_subcommand("psf", "write the viewer's point-spread function (EXR and a log-scale PNG)");
   psf_cmd->add_option("-o,--output", psf.output, "kernel EXR; the picture goes beside it as .png")->required();
+  psf_cmd->add_flag("-y,--overwrite", replace_files, "replace the outputs if they exist");
   psf_cmd->add_option("--width", psf.width, "frame width the kernel is for [px]")->check(CLI::Range(16, 8192));
   psf_cmd->add_option("--height", psf.height, "frame height [px]")->check(CLI::Range(16, 8192));
   psf_cmd->add_option("--adaptation", psf.adaptation_log, "adaptation level [log10 cd/m^2] (sets pupil and regime)")
@@ -99,12 +104,14 @@ int main(int argc, char** argv) {
   ParamSet curve_params = run_parameters(curve_settings).subset({"Retina"});
   CLI::App* curves_cmd = app.add_subcommand("curves", "draw the tone-curve family for the tone settings (PNG)");
   curves_cmd->add_option("-o,--output", curves_output, "PNG file")->required();
+  curves_cmd->add_flag("-y,--overwrite", replace_files, "replace the output if it exists");
   curve_params.bind(*curves_cmd);
 
   std::string report_csv, report_png;
   CLI::App* report_cmd = app.add_subcommand("report", "draw the charts of a run's --report CSV (PNG)");
   report_cmd->add_option("csv", report_csv, "the report CSV of `eyestream run --report`")->required();
   report_cmd->add_option("-o,--output", report_png, "PNG file (default: the CSV's name with .png)");
+  report_cmd->add_flag("-y,--overwrite", replace_files, "replace the output if it exists");
 
   CompareOptions cmp;
   CLI::App* compare_cmd = app.add_subcommand(
@@ -129,6 +136,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.0, 100.0))
       ->capture_default_str();
   compare_cmd->add_option("--diff-out", cmp.diff_out, "CIEDE2000 heat maps: a PNG pattern (diff/%05d.png)");
+  compare_cmd->add_flag("-y,--overwrite", replace_files, "replace heat maps that exist");
   compare_cmd->add_option("--diff-scale", cmp.diff_scale, "CIEDE2000 at full scale in the heat maps")
       ->check(CLI::Range(0.01, 100.0))
       ->capture_default_str();
@@ -155,6 +163,7 @@ int main(int argc, char** argv) {
   CLI::App* concat_cmd =
       app.add_subcommand("concat", "join chunk videos (made with the same settings) without re-encoding");
   concat_cmd->add_option("-o,--output", concat_output, "the joined video (.mp4 or .mkv)")->required();
+  concat_cmd->add_flag("-y,--overwrite", replace_files, "replace the output if it exists");
   concat_cmd->add_option("inputs", concat_inputs, "chunk videos in order")->required();
 
   BenchRequest bench;
@@ -173,6 +182,7 @@ int main(int argc, char** argv) {
                       "leave out balanced with and without --no-skip on a dim still frame and on the scene");
   bench_cmd->add_option("--csv", bench.csv, "write the table as CSV");
   bench_cmd->add_option("--png", bench.png, "draw error against time per frame (PNG)");
+  bench_cmd->add_flag("-y,--overwrite", replace_files, "replace the CSV and the chart if they exist");
   bench_cmd->add_option("--threads", bench_threads, "worker threads; 0 uses all cores")->check(CLI::Range(0, 1024));
 
   try {
@@ -197,6 +207,7 @@ int main(int argc, char** argv) {
       params.apply(settings.config);
       apply_quality_preset(settings.quality, settings);
       params.apply(settings.config);
+      settings.overwrite = settings.overwrite || yes;
       if (settings.print_plan) {
         for (const Param& p : params.params())
           std::printf("%s = %s\n", p.name.c_str(), ParamSet::value_text(p).c_str());
@@ -207,6 +218,10 @@ int main(int argc, char** argv) {
       if (!settings.quiet || summary.interrupted_by) std::fprintf(stderr, "%s\n", summary.one_line().c_str());
       if (summary.interrupted_by) return 128 + summary.interrupted_by;
     } else if (*bench_cmd) {
+      std::vector<OutputPath> outputs;
+      if (!bench.csv.empty()) require_extension(bench.csv, {".csv"}, "--csv"), outputs.push_back({bench.csv, "--csv"});
+      if (!bench.png.empty()) require_extension(bench.png, {".png"}, "--png"), outputs.push_back({bench.png, "--png"});
+      if (!replace_files) refuse_existing(outputs);  // before minutes of work
       cv::setNumThreads(bench_threads > 0 ? bench_threads : -1);
       const std::vector<BenchRow> rows = run_bench(bench);
       std::printf("%s", bench_table(rows).c_str());
@@ -214,13 +229,23 @@ int main(int argc, char** argv) {
       if (!bench.png.empty()) draw_bench_chart(rows, bench.png);
     } else if (*curves_cmd) {
       curve_params.apply("");
+      require_extension(curves_output, {".png"}, "curves -o");
+      if (!replace_files) refuse_existing({{curves_output, "-o"}});
       write_tone_curves(curve_settings.tone, curves_output);
     } else if (*psf_cmd) {
       psf_params.apply("");
+      require_extension(psf.output, {".exr"}, "psf -o");
+      if (!replace_files)
+        refuse_existing({{psf.output, "-o"},
+                         {std::filesystem::path(psf.output).replace_extension(".png").string(), "-o's picture"}});
       std::printf("%s", write_psf(psf_settings, psf).text().c_str());
     } else if (*compare_cmd) {
       if (!cmp.diff_out.empty() && !io::is_printf_pattern(cmp.diff_out))
         throw UsageError("--diff-out '" + cmp.diff_out + "': expected a printf pattern such as diff/%05d.png");
+      if (!cmp.diff_out.empty()) {
+        require_extension(cmp.diff_out, {".png"}, "--diff-out");
+        if (!replace_files) refuse_existing({{cmp.diff_out, "--diff-out"}});
+      }
       const CompareResult r = compare(cmp);
       std::printf("%s", r.text.c_str());
       return r.exit_code;
@@ -231,10 +256,14 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "eyestream: %zu chunks of up to %lld frames, %.2f s pre-roll each\n", plan.size(),
                    (long long)chunks.chunk_frames, chunks.preroll_s);
     } else if (*concat_cmd) {
+      require_extension(concat_output, {".mp4", ".mkv"}, "concat -o");
+      if (!replace_files) refuse_existing({{concat_output, "-o"}});
       io::concat_videos(concat_inputs, concat_output);
       std::fprintf(stderr, "eyestream: joined %zu videos into %s\n", concat_inputs.size(), concat_output.c_str());
     } else if (*report_cmd) {
       if (report_png.empty()) report_png = std::filesystem::path(report_csv).replace_extension(".png").string();
+      require_extension(report_png, {".png"}, "report -o");
+      if (!replace_files) refuse_existing({{report_png, "-o"}});
       draw_report_file(report_csv, report_png);
       std::fprintf(stderr, "eyestream: wrote %s\n", report_png.c_str());
     } else if (*sample_cmd) {

@@ -1,5 +1,7 @@
 #include "pipeline/output_paths.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <regex>
 
@@ -71,6 +73,39 @@ void check_outputs(const std::vector<OutputPath>& outputs) {
                          outputs[i].role + " (" + outputs[i].path + "); name them apart");
     }
   }
+}
+
+void refuse_existing(const std::vector<OutputPath>& outputs, std::int64_t first_frame, std::int64_t end_frame) {
+  const auto refuse = [](const std::string& path, const std::string& role) {
+    throw OutputError(path + " (" + role + ") exists; pass -y (--overwrite) to replace it");
+  };
+  for (const OutputPath& o : outputs) {
+    if (!io::is_printf_pattern(o.path)) {
+      if (fs::exists(o.path)) refuse(o.path, o.role);
+      continue;
+    }
+    if (end_frame > first_frame) {
+      for (std::int64_t k = first_frame; k < end_frame; ++k)
+        if (fs::exists(io::format_pattern(o.path, k))) refuse(io::format_pattern(o.path, k), o.role);
+      continue;
+    }
+    const fs::path folder = fs::path(normal(o.path)).parent_path();
+    std::error_code ec;
+    if (!fs::is_directory(folder, ec)) continue;
+    const std::regex frames = pattern_regex(normal(o.path));
+    for (const fs::directory_entry& e : fs::directory_iterator(folder, ec))
+      if (std::regex_match(normal(e.path().string()), frames))
+        refuse(e.path().string(), o.role);
+  }
+}
+
+void require_extension(const std::string& path, const std::vector<std::string>& extensions, const std::string& role) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if (std::find(extensions.begin(), extensions.end(), ext) != extensions.end()) return;
+  std::string list;
+  for (const std::string& e : extensions) list += (list.empty() ? "" : " or ") + e;
+  throw UsageError(role + " '" + path + "': writes " + list + " only; name the file so");
 }
 
 }  // namespace eyestream::pipeline

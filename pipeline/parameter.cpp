@@ -150,10 +150,45 @@ void ParamSet::bind(CLI::App& app) {
   }
 }
 
+namespace {
+
+// Edit distance (insertions, deletions, substitutions) between two names.
+size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diagonal = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+// " (did you mean 'x'?)" for the parameter nearest to `key` (underscores
+// read as dashes), when it is within a third of the key's length; "".
+std::string suggestion(const std::string& key, const std::vector<Param>& params) {
+  std::string dashed = key;
+  std::replace(dashed.begin(), dashed.end(), '_', '-');
+  const Param* best = nullptr;
+  size_t best_distance = std::max<size_t>(2, dashed.size() / 3) + 1;
+  for (const Param& p : params) {
+    const size_t d = edit_distance(dashed, p.name);
+    if (d < best_distance) best = &p, best_distance = d;
+  }
+  return best ? " (did you mean '" + best->name + "'?)" : "";
+}
+
+}  // namespace
+
 void ParamSet::apply_json(const nlohmann::json& object, const std::string& origin) {
   for (auto it = object.begin(); it != object.end(); ++it) {
     auto found = std::find_if(params_.begin(), params_.end(), [&](const Param& p) { return p.name == it.key(); });
-    if (found == params_.end()) throw UsageError(origin + ": unknown parameter '" + it.key() + "'");
+    if (found == params_.end())
+      throw UsageError(origin + ": unknown parameter '" + it.key() + "'" + suggestion(it.key(), params_));
     set_json(*found, it.value(), origin + ": ");
   }
 }

@@ -244,6 +244,8 @@ ParamSet run_parameters(Settings& s) {
                  prog, &s.progress_every_s, 0, 1e6));
   set.add(flag("quiet", "nothing on stderr but warnings and errors (no progress, no summary line)", prog, &s.quiet));
   set.add(flag("verbose", "per-frame log on stderr", prog, &s.verbose));
+  set.add(flag("overwrite", "replace outputs that exist (also -y); without it an existing output is refused", prog,
+               &s.overwrite));
   return set;
 }
 

@@ -121,6 +121,7 @@ struct Settings {
   bool progress = true;
   double progress_every_s = 10.0;  // between plain progress lines when stderr is not a terminal
   bool quiet = false;              // no progress and no summary line
+  bool overwrite = false;          // replace existing outputs (-y)
   bool verbose = false;
 };
 

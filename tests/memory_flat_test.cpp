@@ -23,7 +23,7 @@ namespace {
 long peak_kib(const test::ScratchDir& dir, long frames, const std::string& output) {
   const std::string command = "head -c " + std::to_string(16L * 16 * 12 * frames) +
                               " /dev/zero | /usr/bin/time -f %M -o " + (dir / "rss.txt") + " " EYESTREAM_BINARY +
-                              " run -i - --size 16x16 -g " + (dir / "gaze.csv") + " --no-progress " + output +
+                              " run -y -i - --size 16x16 -g " + (dir / "gaze.csv") + " --no-progress " + output +
                               " > /dev/null 2> " + (dir / "err.txt");
   if (std::system(command.c_str()) != 0) return -1;
   long kib = -1;

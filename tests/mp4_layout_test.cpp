@@ -38,7 +38,7 @@ TEST(Mp4Layout, IndexFirstAndHevcTaggedHvc1) {
                 .exit_code,
             0);
   for (const std::string extra : {"", " --bit-depth 10"}) {
-    const auto r = test::run_eyestream("run -i " + (dir / "h/frames") + " -o " + (dir / "v.mp4") + extra);
+    const auto r = test::run_eyestream("run -y -i " + (dir / "h/frames") + " -o " + (dir / "v.mp4") + extra);
     ASSERT_EQ(r.exit_code, 0) << r.output;
     const std::string bytes = test::read_bytes(dir / "v.mp4");
     const std::vector<std::string> boxes = top_level_boxes(bytes);

@@ -85,6 +85,18 @@ TEST(Parameters, ConfigFileErrorsNameTheFileAndKey) {
   EXPECT_THROW(parse({}, dir / "broken.json"), InputError);
 }
 
+// A misspelt key names the parameter it was probably meant to be.
+TEST(Parameters, AnUnknownKeySuggestsTheNearestOne) {
+  test::ScratchDir dir;
+  std::ofstream(dir / "typo.json") << R"({"viewer_age": 70})";
+  EXPECT_NE(usage_error({}, dir / "typo.json").find("did you mean 'viewer-age'?"), std::string::npos)
+      << usage_error({}, dir / "typo.json");
+  std::ofstream(dir / "close.json") << R"({"adapt-rate-upp": 1})";
+  EXPECT_NE(usage_error({}, dir / "close.json").find("did you mean 'adapt-rate-up'?"), std::string::npos);
+  std::ofstream(dir / "far.json") << R"({"zzzzzzzzzz": 1})";
+  EXPECT_EQ(usage_error({}, dir / "far.json").find("did you mean"), std::string::npos) << "nothing near";
+}
+
 TEST(Parameters, EveryDeclarationHasHelpAndAValidDefault) {
   Settings s;
   const ParamSet params = run_parameters(s);

@@ -15,7 +15,7 @@ TEST(Progress, PlainLinesOffATerminalAndSilenceWithQuiet) {
   ASSERT_EQ(test::run_eyestream("sample headlights -o " + (dir / "h") + " --width 64 --height 36 --duration 0.5")
                 .exit_code,
             0);
-  const std::string in = "run -i " + (dir / "h/frames") + " -o " + (dir / "v.mp4");
+  const std::string in = "run -y -i " + (dir / "h/frames") + " -o " + (dir / "v.mp4");
   auto r = test::run_eyestream(in + " --progress-every 0");  // a line a frame
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("eyestream: 1/15 frames, "), std::string::npos) << r.output;

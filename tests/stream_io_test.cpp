@@ -95,7 +95,7 @@ TEST(StreamOutput, HevcAndHdr10BytesAreTheSameWhateverTheThreadCount) {
     std::string bytes[3];
     for (int run = 0; run < 3; ++run) {
       const std::string out = dir / ("v" + std::to_string(run) + ".mkv");
-      const auto r = test::run_eyestream("run -i " + (dir / "s/frames") + " -o " + out + " " + kind + " --threads " +
+      const auto r = test::run_eyestream("run -y -i " + (dir / "s/frames") + " -o " + out + " " + kind + " --threads " +
                                          (run == 2 ? "2" : "1"));
       ASSERT_EQ(r.exit_code, 0) << r.output;
       bytes[run] = test::read_bytes(out);
