@@ -1,5 +1,7 @@
 #include "io/exr_file.hpp"
 
+#include <algorithm>
+
 #include <cmath>
 
 #include <Imath/half.h>
@@ -30,11 +32,52 @@ Imf::Chromaticities to_imf(const Chromaticities& c) {
                              Imath::V2f(float(c.bx), float(c.by)), Imath::V2f(float(c.wx), float(c.wy)));
 }
 
-std::string channel_layout(const Imf::ChannelList& ch) {
-  bool rgb = ch.findChannel("R") && ch.findChannel("G") && ch.findChannel("B");
-  if (rgb) return ch.findChannel("A") ? "RGBA" : "RGB";
-  if (ch.findChannel("Y")) return "Y";
+// The channel layout of layer `prefix` ("" or "ViewLayer.Combined."):
+// "RGBA", "RGB", "Y" or "".
+std::string channel_layout(const Imf::ChannelList& ch, const std::string& prefix) {
+  const auto has = [&](const char* c) { return ch.findChannel(prefix + c) != nullptr; };
+  if (has("R") && has("G") && has("B")) return has("A") ? "RGBA" : "RGB";
+  if (has("Y")) return "Y";
   return "";
+}
+
+// The layers (channel-name prefixes before the last '.') holding R, G and B
+// or Y, in the file's order; the unnamed root layer is "".
+std::vector<std::string> colour_layers(const Imf::ChannelList& ch) {
+  std::vector<std::string> layers;
+  for (Imf::ChannelList::ConstIterator i = ch.begin(); i != ch.end(); ++i) {
+    const std::string name = i.name();
+    const size_t dot = name.rfind('.');
+    const std::string layer = dot == std::string::npos ? "" : name.substr(0, dot);
+    if (std::find(layers.begin(), layers.end(), layer) == layers.end() &&
+        !channel_layout(ch, layer.empty() ? "" : layer + ".").empty())
+      layers.push_back(layer);
+  }
+  return layers;
+}
+
+bool ends_with(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+// The layer to read: `wanted` when given; else the root layer, else the
+// beauty pass (Blender's ...Combined, or a layer named beauty or RGBA),
+// else the only colour layer. InputError listing the layers otherwise.
+std::string choose_layer(const std::string& path, const Imf::ChannelList& ch, const std::string& wanted) {
+  const std::vector<std::string> layers = colour_layers(ch);
+  std::string list;
+  for (const std::string& l : layers) list += (list.empty() ? "" : ", ") + (l.empty() ? std::string("(root)") : l);
+  if (!wanted.empty()) {
+    if (std::find(layers.begin(), layers.end(), wanted) != layers.end()) return wanted;
+    throw InputError(path + ": no colour layer '" + wanted + "' (--layer); it holds " +
+                     (list.empty() ? std::string("none") : list));
+  }
+  if (std::find(layers.begin(), layers.end(), "") != layers.end()) return "";
+  for (const std::string& l : layers)
+    if (ends_with(l, "Combined") || ends_with(l, "beauty") || ends_with(l, "RGBA") || ends_with(l, "rgba")) return l;
+  if (layers.size() == 1) return layers.front();
+  if (layers.empty()) throw InputError(path + ": no R,G,B or Y channels");
+  throw InputError(path + ": several colour layers (" + list + ") and no beauty pass; choose one with --layer");
 }
 
 // The data window from the header alone (OpenEXR's core library reads no
@@ -61,7 +104,7 @@ void check_data_window(const std::string& path, std::int64_t max_pixels) {
 
 }  // namespace
 
-ExrImage read_exr(const std::string& path, std::int64_t max_pixels) {
+ExrImage read_exr(const std::string& path, std::int64_t max_pixels, const std::string& layer) {
   try {
     check_data_window(path, max_pixels);
     Imf::InputFile file(path.c_str());
@@ -74,8 +117,9 @@ ExrImage read_exr(const std::string& path, std::int64_t max_pixels) {
                        " exceeds the limit of " + std::to_string(max_pixels) + " pixels (--max-pixels)");
 
     ExrImage image;
-    image.channels = channel_layout(header.channels());
-    if (image.channels.empty()) throw InputError(path + ": no R,G,B or Y channels");
+    image.layer = choose_layer(path, header.channels(), layer);
+    const std::string prefix = image.layer.empty() ? "" : image.layer + ".";
+    image.channels = channel_layout(header.channels(), prefix);
     // Metadata that would silently give black frames or absurd timing is
     // refused, naming the attribute (--scale and --fps override them).
     if (Imf::hasWhiteLuminance(header)) {
@@ -102,11 +146,11 @@ ExrImage read_exr(const std::string& path, std::int64_t max_pixels) {
     char* base = reinterpret_cast<char*>(image.rgb.ptr<float>());
     Imf::FrameBuffer fb;
     if (image.channels == "Y") {
-      fb.insert("Y", Imf::Slice::Make(Imf::FLOAT, base, dw, xs, ys));
+      fb.insert(prefix + "Y", Imf::Slice::Make(Imf::FLOAT, base, dw, xs, ys));
     } else {
-      fb.insert("R", Imf::Slice::Make(Imf::FLOAT, base, dw, xs, ys));
-      fb.insert("G", Imf::Slice::Make(Imf::FLOAT, base + sizeof(float), dw, xs, ys));
-      fb.insert("B", Imf::Slice::Make(Imf::FLOAT, base + 2 * sizeof(float), dw, xs, ys));
+      fb.insert(prefix + "R", Imf::Slice::Make(Imf::FLOAT, base, dw, xs, ys));
+      fb.insert(prefix + "G", Imf::Slice::Make(Imf::FLOAT, base + sizeof(float), dw, xs, ys));
+      fb.insert(prefix + "B", Imf::Slice::Make(Imf::FLOAT, base + 2 * sizeof(float), dw, xs, ys));
     }
     file.setFrameBuffer(fb);
     file.readPixels(dw.min.y, dw.max.y);

@@ -19,13 +19,18 @@ struct ExrImage {
   std::optional<Chromaticities> chromaticities;
   std::optional<double> frames_per_second;
   std::string channels;  // "RGB", "RGBA" or "Y"
+  std::string layer;     // the layer read ("" the root, "ViewLayer.Combined" ...)
 };
 
 // Reads RGB, RGBA (alpha ignored) or luminance-only (Y) EXR files, half or
 // float. Refuses (InputError, naming the file) a file that is unreadable,
 // truncated, lacks those channels, or whose data window exceeds max_pixels
 // (checked from the header before any pixel memory is allocated).
-ExrImage read_exr(const std::string& path, std::int64_t max_pixels);
+// Layered files (Blender's multilayer "ViewLayer.Combined.R", ...): `layer`
+// names the one to read; without it, the root R,G,B, else the beauty pass
+// (a layer ending in Combined, beauty or RGBA), else the only colour layer;
+// anything else is refused listing the layers.
+ExrImage read_exr(const std::string& path, std::int64_t max_pixels, const std::string& layer = "");
 
 struct ExrWriteOptions {
   bool half = true;

@@ -10,7 +10,7 @@ namespace eyestream::io {
 ExrSequenceSource::ExrSequenceSource(const std::string& input, const ExrSequenceOptions& options)
     : options_(options), entries_(list_sequence(input, {".exr"}, options.skip_missing)) {
   for (const SequenceEntry& e : entries_) protect_input(e.path);
-  ExrImage probe = read_exr(entries_.front().path, options_.max_pixels);
+  ExrImage probe = read_exr(entries_.front().path, options_.max_pixels, options_.layer);
   double fps =
       options_.frames_per_second.value_or(probe.frames_per_second.value_or(options_.default_frames_per_second));
   if (!(fps > 0)) throw UsageError("--fps: frame rate must be positive");
@@ -18,13 +18,14 @@ ExrSequenceSource::ExrSequenceSource(const std::string& input, const ExrSequence
   info_.height = probe.rgb.rows;
   info_.frames_per_second = fps;
   info_.frame_count = std::int64_t(entries_.size());
-  info_.description = "EXR sequence, " + std::to_string(entries_.size()) + " frames, " + probe.channels;
+  info_.description = "EXR sequence, " + std::to_string(entries_.size()) + " frames, " + probe.channels +
+                      (probe.layer.empty() ? "" : " of layer " + probe.layer);
   channels_ = probe.channels;
   first_ = decode(entries_.front(), 0);
 }
 
 SceneFrame ExrSequenceSource::decode(const SequenceEntry& entry, std::int64_t index) const {
-  ExrImage image = read_exr(entry.path, options_.max_pixels);
+  ExrImage image = read_exr(entry.path, options_.max_pixels, options_.layer);
   if (index > 0 && (image.rgb.cols != info_.width || image.rgb.rows != info_.height))
     throw InputError(entry.path + ": frame " + std::to_string(index) + " is " + std::to_string(image.rgb.cols) + "x" +
                      std::to_string(image.rgb.rows) + ", the sequence began at " + std::to_string(info_.width) + "x" +

@@ -18,6 +18,7 @@ struct ExrSequenceOptions {
   double default_frames_per_second = 30.0;  // when neither says
   bool skip_missing = false;
   std::int64_t max_pixels = default_max_pixels();  // memory_guard.hpp
+  std::string layer;  // of layered files (exr_file.hpp); "": the beauty pass
 };
 
 // Decodes each frame to linear Rec.709 in cd/m^2: pixel * scale, where scale

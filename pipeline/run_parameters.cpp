@@ -13,6 +13,8 @@ ParamSet run_parameters(Settings& s) {
                  in, &s.exr.scale, 1e-12, 1e12));
   set.add(number("fps", "1/s", "frame rate; overrides the EXR framesPerSecond attribute (30 when neither says)", in,
                  &s.exr.frames_per_second, 1e-3, 10000));
+  set.add(text("layer", "layer of layered EXRs (Blender's ViewLayer.Combined); default the beauty pass", in,
+               &s.exr.layer));
   set.add(flag("skip-missing", "go on past missing frames of a numbered sequence", in, &s.exr.skip_missing));
   set.add(number("max-pixels", "pixels", "refuse larger frames, before allocating (default: the machine's memory over 400 bytes a pixel)", in, &s.exr.max_pixels, 1, 4e9));
   set.add(choice("on-bad-video", "a video packet that does not decode, or a video that ends early: fail, or stop "
