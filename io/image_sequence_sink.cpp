@@ -1,5 +1,7 @@
 #include "io/image_sequence_sink.hpp"
 
+#include "io/png_file.hpp"
+
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -9,8 +11,9 @@
 
 namespace eyestream::io {
 
-ImageSequenceSink::ImageSequenceSink(std::string pattern, ImageFormat format, std::int64_t first_number)
-    : pattern_(std::move(pattern)), format_(format), first_number_(first_number) {}
+ImageSequenceSink::ImageSequenceSink(std::string pattern, ImageFormat format, std::int64_t first_number,
+                                     double frames_per_second)
+    : pattern_(std::move(pattern)), format_(format), first_number_(first_number), frames_per_second_(frames_per_second) {}
 
 SinkNeeds ImageSequenceSink::needs() const {
   switch (format_) {
@@ -39,12 +42,14 @@ void ImageSequenceSink::write(const DisplayFrame& frame) {
   const std::int64_t number = first_number_ + frame.index;
   StagedFile file(format_pattern(pattern_, number), kTag);
   if (format_ == ImageFormat::kExr) {
-    write_exr(file.temp_path().string(), frame.linear, ExrWriteOptions{false, std::nullopt, std::nullopt});
+    write_exr(file.temp_path().string(), frame.linear,
+              ExrWriteOptions{false, std::nullopt, frames_per_second_ > 0 ? std::optional<double>(frames_per_second_)
+                                                                            : std::nullopt});
   } else {
     cv::Mat bgr;
     cv::cvtColor(frame.code, bgr, cv::COLOR_RGB2BGR);
-    std::vector<unsigned char> bytes;
-    if (!cv::imencode(".png", bgr, bytes)) throw OutputError(file.final_path().string() + ": PNG encoding failed");
+    const std::vector<unsigned char> bytes = encode_png(bgr);
+    if (bytes.empty()) throw OutputError(file.final_path().string() + ": PNG encoding failed");
     write_all(file, bytes);
   }
   file.release();

@@ -18,7 +18,9 @@ enum class ImageFormat { kPng8, kPng16, kExr };
 // run; a second frame then is an OutputError.
 class ImageSequenceSink : public FrameSink {
  public:
-  ImageSequenceSink(std::string pattern, ImageFormat format, std::int64_t first_number = 0);
+  // EXR frames carry frames_per_second (when > 0) as framesPerSecond.
+  ImageSequenceSink(std::string pattern, ImageFormat format, std::int64_t first_number = 0,
+                    double frames_per_second = 0.0);
   SinkNeeds needs() const override;
   void write(const DisplayFrame& frame) override;
   void finish() override;
@@ -32,6 +34,7 @@ class ImageSequenceSink : public FrameSink {
   std::string pattern_;
   ImageFormat format_;
   std::int64_t first_number_;
+  double frames_per_second_;
   std::vector<std::pair<std::int64_t, std::int64_t>> staged_;  // [first, last] numbers
   std::int64_t staged_count_ = 0;
   std::int64_t written_ = 0;

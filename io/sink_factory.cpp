@@ -27,7 +27,7 @@ std::unique_ptr<FrameSink> make_sink(const std::string& path, const SinkOptions&
   if (ext == ".mp4" || ext == ".mkv" || ext == ".stream") return std::make_unique<VideoWriter>(path, options.video);
   if (ext == ".png")
     return std::make_unique<ImageSequenceSink>(path, options.png_bits == 16 ? ImageFormat::kPng16 : ImageFormat::kPng8);
-  return std::make_unique<ImageSequenceSink>(path, ImageFormat::kExr);
+  return std::make_unique<ImageSequenceSink>(path, ImageFormat::kExr, 0, options.video.frames_per_second);
 }
 
 SinkNeeds sink_needs(const std::string& path, const SinkOptions& options) {

@@ -11,6 +11,7 @@ packages=(
   libeigen3-dev libfftw3-dev
   libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  zlib1g-dev  # the tests check PNG chunk CRCs with zlib (an independent CRC-32)
 )
 
 missing=()
