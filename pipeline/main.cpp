@@ -53,9 +53,22 @@ int main(int argc, char** argv) {
   app.set_help_all_flag("--help-all", "every option of every command");
   app.set_version_flag("--version", std::string("eyestream ") + EYESTREAM_VERSION);
 
+  // The defaults --help shows are those of the preset the command line
+  // names (or the default one): the table takes its defaults from the
+  // settings it is built on.
   Settings settings;
+  for (int i = 1; i + 1 < argc; ++i)
+    if (std::string(argv[i]) == "--quality") settings.quality = argv[i + 1];
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]).rfind("--quality=", 0) == 0) settings.quality = std::string(argv[i]).substr(10);
+  try {
+    apply_quality_preset(settings.quality, settings);
+  } catch (const UsageError&) {
+    apply_quality_preset(Settings().quality, settings);  // reported when the command line is read
+  }
   ParamSet params = run_parameters(settings);
-  CLI::App* run_cmd = app.add_subcommand("run", "filter an HDR frame sequence with a gaze log");
+  CLI::App* run_cmd = app.add_subcommand(
+      "run", "filter an HDR frame sequence with a gaze log (defaults shown for --quality " + settings.quality + ")");
   run_cmd
       ->add_option("-i,--input", settings.input,
                    "EXR sequence (frames/%05d.exr, folder or file), HDR video, .hdr/.pfm stills, or - (raw float "

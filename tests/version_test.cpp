@@ -37,3 +37,27 @@ TEST(Version, CommandLinePlanAndReportGiveTheDeclaredVersion) {
 
 }  // namespace
 }  // namespace eyestream
+
+namespace eyestream {
+namespace {
+
+// --help shows the defaults the chosen preset runs with (balanced by
+// default: the split engine), not the table's bare ones.
+TEST(Help, ShowsThePresetsDefaults) {
+  const auto balanced = test::run_eyestream("run --help");
+  EXPECT_NE(balanced.output.find("defaults shown for --quality balanced"), std::string::npos) << balanced.output;
+  const auto line = [](const std::string& help, const std::string& option) {
+    const size_t at = help.find(option);
+    return at == std::string::npos ? std::string() : help.substr(at, help.find('\n', at) - at);
+  };
+  EXPECT_NE(line(balanced.output, "--glare-engine").find("(default split;"), std::string::npos)
+      << line(balanced.output, "--glare-engine");
+  const auto reference = test::run_eyestream("run --quality reference --help");
+  EXPECT_NE(line(reference.output, "--glare-engine").find("(default exact;"), std::string::npos)
+      << line(reference.output, "--glare-engine");
+  EXPECT_NE(line(test::run_eyestream("run --quality=fast --help").output, "--state-resolution").find("(default 0.25;"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace eyestream
