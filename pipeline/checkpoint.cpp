@@ -82,8 +82,10 @@ std::string first_difference(const std::string& a, const std::string& b) {
 
 std::string run_settings(const Settings& s, const io::SourceInfo& source) {
   Settings copy = s;
-  const std::set<std::string> ignored = {"threads", "progress", "verbose", "print-plan", "max-pixels",
-                                         "checkpoint", "checkpoint-every", "resume"};
+  // What changes how a run reports or where it writes, not what it computes.
+  const std::set<std::string> ignored = {"threads",    "progress",         "verbose", "print-plan",
+                                         "max-pixels", "checkpoint",       "checkpoint-every", "resume",
+                                         "quiet",      "progress-every",   "progress-file", "overwrite"};
   std::ostringstream text;
   const ParamSet params = run_parameters(copy);
   for (const Param& p : params.params())

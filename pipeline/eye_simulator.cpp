@@ -23,8 +23,11 @@ EyeSimulator::EyeSimulator(Plan plan)
 
 double EyeSimulator::patch_log_mean(const retina::LuminanceField& field, double x, double y, double surround) const {
   // The patch is patch_deg wide in true angle at the gaze.
+  // (Bounded: a gaze far off a rectilinear frame has an enormous scale.)
   const cv::Vec2d ppd = plan_.projection->local_pixels_per_degree({x, y});
-  return field.patch_log_mean(x, y, 0.5 * plan_.patch_deg * ppd[0], 0.5 * plan_.patch_deg * ppd[1], surround);
+  const double most = 4.0 * (plan_.width + plan_.height);
+  return field.patch_log_mean(x, y, std::min(0.5 * plan_.patch_deg * ppd[0], most),
+                              std::min(0.5 * plan_.patch_deg * ppd[1], most), surround);
 }
 
 io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::vector<GazeSegment>& segments,

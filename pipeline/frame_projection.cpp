@@ -210,6 +210,41 @@ FrameProjection::FrameProjection(int width, int height, double fov_deg, Projecti
     }
 }
 
+cv::Size2d FrameProjection::retina_reach() const {
+  if (identity()) return {double(frame_.width), double(frame_.height)};
+  // The largest offsets, across and down, of any frame point seen from any
+  // gaze on the frame: both on its edge (the offsets grow outward), so
+  // sampled densely along the edge for the gaze and for the point.
+  std::vector<cv::Point2d> edge;
+  constexpr int kPerSide = 96;
+  for (int i = 0; i <= kPerSide; ++i) {
+    const double u = double(i) / kPerSide;
+    edge.push_back({u * frame_.width, 0.0});
+    edge.push_back({u * frame_.width, double(frame_.height)});
+    edge.push_back({0.0, u * frame_.height});
+    edge.push_back({double(frame_.width), u * frame_.height});
+  }
+  double across = 0.0, down = 0.0;
+  for (const cv::Point2d& gaze : edge) {
+    for (const cv::Point2d& p : edge) {
+      const cv::Vec2d o = gaze_offset(gaze, p);
+      across = std::max(across, std::abs(o[0]));
+      down = std::max(down, std::abs(o[1]));
+    }
+  }
+  return {across + 1.0, down + 1.0};  // a pixel's margin for the interpolation
+}
+
+cv::Vec2d FrameProjection::gaze_offset(cv::Point2d gaze, cv::Point2d p) const {
+  if (identity()) return {p.x - gaze.x, p.y - gaze.y};
+  const cv::Vec3d ez = cv::normalize(cv::Vec3d(gaze.x - 0.5 * frame_.width, gaze.y - 0.5 * frame_.height, f_px_));
+  const cv::Vec3d ex = cv::normalize(cv::Vec3d(1, 0, 0) - ez[0] * ez), ey = ez.cross(ex);
+  const cv::Vec3d d(p.x - 0.5 * frame_.width, p.y - 0.5 * frame_.height, f_px_);
+  const double a = d.dot(ex), b = d.dot(ey), c = d.dot(ez), s = std::hypot(a, b);
+  const double k = s > 0.0 ? f_px_ * std::atan2(s, c) / s : 0.0;
+  return {k * a, k * b};
+}
+
 cv::Point2d FrameProjection::to_plane(cv::Point2d p) const {
   if (identity()) return p;
   const double X = p.x - 0.5 * frame_.width, Y = p.y - 0.5 * frame_.height, r = std::hypot(X, Y);
@@ -293,22 +328,16 @@ cv::Mat FrameProjection::gaze_positions(cv::Point2d gaze, cv::Size size, double 
                                             float(origin.y + scale * ((y + 0.5) * sy - gaze.y)));
     return out;
   }
-  // The gaze's frame: e_z along the gaze, e_x the frame's horizontal made
-  // perpendicular to it, e_y = e_z x e_x (down the frame).
-  const cv::Vec3d ez = cv::normalize(cv::Vec3d(gaze.x - 0.5 * frame_.width, gaze.y - 0.5 * frame_.height, f_px_));
-  const cv::Vec3d ex = cv::normalize(cv::Vec3d(1, 0, 0) - ez[0] * ez), ey = ez.cross(ex);
   const auto exact = [&](double X, double Y) {
-    const cv::Vec3d d(X - 0.5 * frame_.width, Y - 0.5 * frame_.height, f_px_);
-    const double a = d.dot(ex), b = d.dot(ey), c = d.dot(ez), s = std::hypot(a, b);
-    const double k = s > 0.0 ? scale * f_px_ * std::atan2(s, c) / s : 0.0;
-    return cv::Vec2d(origin.x + k * a, origin.y + k * b);
+    const cv::Vec2d o = gaze_offset(gaze, {X, Y});
+    return cv::Vec2d(origin.x + scale * o[0], origin.y + scale * o[1]);
   };
   // Exact at nodes every kStep pixels (and the last), bilinear between.
   constexpr int kStep = 4;
   const auto nodes = [](int n) {
     std::vector<int> v;
-    for (int i = 0; i < n - 1; i += kStep) v.push_back(i);
-    v.push_back(std::max(n - 1, 1));  // a one-pixel image interpolates toward a virtual neighbour
+    for (int i = 0; i < std::max(n - 1, 1); i += kStep) v.push_back(i);
+    v.push_back(std::max(n - 1, 1));  // a one-pixel image: node 0 and a virtual neighbour at 1
     return v;
   };
   const std::vector<int> nx = nodes(size.width), ny = nodes(size.height);

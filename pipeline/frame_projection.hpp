@@ -68,6 +68,13 @@ class FrameProjection {
   // exactly every 4 pixels and bilinearly between (within 0.01 px at
   // 960x540, 120 deg).
   cv::Mat gaze_positions(cv::Point2d gaze, cv::Size size, double scale, cv::Point2d origin) const;
+  // One frame point's offset (plane px) from a gaze, as above: x along the
+  // frame's horizontal at the gaze, the length the true angle.
+  cv::Vec2d gaze_offset(cv::Point2d gaze, cv::Point2d point) const;
+  // The largest offsets across and down (plane px) of any frame point from
+  // any gaze on the frame: how far the retinal grid must reach (the
+  // frame's own size when equidistant).
+  cv::Size2d retina_reach() const;
 
   // A frame image (CV_32FC1, CV_32FC3 or CV_64FC3) carried into the plane,
   // resized to `size` (0: the plane's): each plane pixel the mean of the

@@ -50,7 +50,8 @@ std::vector<StepGroup> group_segments(const std::vector<GazeSegment>& segments, 
 
 RetinaStage::RetinaStage(const Plan& plan)
     : plan_(plan),
-      grid_(plan.plane_size().width, plan.plane_size().height, plan.retina.sites_per_pixel),
+      grid_(int(std::ceil(plan.projection->retina_reach().width)), int(std::ceil(plan.projection->retina_reach().height)),
+            plan.retina.sites_per_pixel),
       state_(grid_.size(), plan.retina.receptors, plan.retina.double_precision),
       visibility_(grid_.foveal_falloff(plan.retina.fovea_sigma_px)) {
   const int type = plan.retina.double_precision ? CV_64FC3 : CV_32FC3;

@@ -201,7 +201,7 @@ RunSummary run(const Settings& s) {
   std::optional<io::StagedFile> state_file;  // committed with the other outputs
   RunSummary summary;
   summary.output = s.output;
-  Progress progress(info.frame_count, s.progress && !s.quiet, s.progress_every_s);
+  Progress progress(info.frame_count, s.progress && !s.quiet, s.progress_every_s, s.progress_file);
   if (overlap_io(s)) source = std::make_unique<io::PrefetchSource>(std::move(source));
   const std::int64_t first_processed =
       std::max<std::int64_t>(0, s.start_frame - std::int64_t(std::ceil(s.preroll_s * info.frames_per_second)));

@@ -244,6 +244,8 @@ ParamSet run_parameters(Settings& s) {
                prog, &s.progress));
   set.add(number("progress-every", "s", "seconds between progress lines when stderr is not a terminal (CI, Slurm)",
                  prog, &s.progress_every_s, 0, 1e6));
+  set.add(text("progress-file", "write key=value progress blocks (frame, fps, eta_s, progress=continue|end) here, "
+               "as ffmpeg's -progress", prog, &s.progress_file));
   set.add(flag("quiet", "nothing on stderr but warnings and errors (no progress, no summary line)", prog, &s.quiet));
   set.add(flag("verbose", "per-frame log on stderr", prog, &s.verbose));
   set.add(flag("overwrite", "replace outputs that exist (also -y); without it an existing output is refused", prog,

@@ -122,6 +122,7 @@ struct Settings {
   double progress_every_s = 10.0;  // between plain progress lines when stderr is not a terminal
   bool quiet = false;              // no progress and no summary line
   bool overwrite = false;          // replace existing outputs (-y)
+  std::string progress_file;       // key=value progress blocks for programs (progress.hpp)
   bool verbose = false;
 };
 

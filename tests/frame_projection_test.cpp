@@ -94,6 +94,33 @@ TEST(FrameProjection, GazePositionsAreTrueAnglesFromTheGaze) {
   EXPECT_LT(cv::norm(central, p.plane_positions(), cv::NORM_INF), 0.01);
 }
 
+// The retinal grid reaches every frame point from every gaze on the frame,
+// corners included; and images one pixel wide or high have positions too.
+TEST(FrameProjection, TheRetinasReachCoversEveryGazeAndPoint) {
+  for (const double fov : {29.3, 120.0, 170.0}) {
+    const FrameProjection p(kW, kH, fov, Projection::rectilinear);
+    const cv::Size2d reach = p.retina_reach();
+    double across = 0.0, down = 0.0;
+    for (int gy = 0; gy <= kH; gy += kH / 6)
+      for (int gx = 0; gx <= kW; gx += kW / 8)
+        for (int y = 0; y <= kH; y += kH / 9)
+          for (int x = 0; x <= kW; x += kW / 12) {
+            const cv::Vec2d o = p.gaze_offset({double(gx), double(gy)}, {double(x), double(y)});
+            across = std::max(across, std::abs(o[0]));
+            down = std::max(down, std::abs(o[1]));
+          }
+    EXPECT_LE(across, reach.width) << fov << " deg";
+    EXPECT_LE(down, reach.height) << fov << " deg";
+    EXPECT_GT(down, p.plane_size().height) << fov << " deg: more than the plane's own height from a corner";
+  }
+  const FrameProjection p(kW, kH, 120.0, Projection::rectilinear);
+  for (const cv::Size size : {cv::Size(1, 7), cv::Size(9, 1), cv::Size(1, 1)}) {
+    const cv::Mat pos = p.gaze_positions({100, 100}, size, 1.0, {0, 0});
+    EXPECT_EQ(pos.size(), size);
+    EXPECT_TRUE(cv::checkRange(pos));
+  }
+}
+
 TEST(FrameProjection, ThePlaneIsTheSameWhateverTheThreadCount) {
   const FrameProjection p(kW, kH, 120.0, Projection::rectilinear);
   cv::Mat frame(kH, kW, CV_32FC3);

@@ -30,3 +30,28 @@ TEST(Progress, PlainLinesOffATerminalAndSilenceWithQuiet) {
 
 }  // namespace
 }  // namespace eyestream
+
+namespace eyestream {
+namespace {
+
+// For programs: --progress-file holds key=value blocks, the last one
+// progress=end with every frame counted.
+TEST(Progress, AProgressFileForPrograms) {
+  test::ScratchDir dir;
+  ASSERT_EQ(test::run_eyestream("sample headlights -o " + (dir / "h") + " --width 64 --height 36 --duration 0.5")
+                .exit_code,
+            0);
+  const auto r = test::run_eyestream("run -i " + (dir / "h/frames") + " -o " + (dir / "v.mp4") + " --progress-file " +
+                                     (dir / "p.txt"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string text = test::read_bytes(dir / "p.txt");
+  const size_t last = text.rfind("frame=");
+  ASSERT_NE(last, std::string::npos) << text;
+  const std::string block = text.substr(last);
+  EXPECT_EQ(block.rfind("frame=15\ntotal_frames=15\nfps=", 0), 0u) << block;
+  EXPECT_NE(block.find("\nelapsed_s="), std::string::npos) << block;
+  EXPECT_TRUE(block.size() > 13 && block.substr(block.size() - 13) == "progress=end\n") << block;
+}
+
+}  // namespace
+}  // namespace eyestream
