@@ -64,12 +64,12 @@ std::optional<DisplayImage> DisplaySequence::next() {
   if (video_) {
     std::optional<VideoFrame> f = video_->next();
     if (!f) return std::nullopt;
-    return DisplayImage{f->rgb, path_ + " frame " + std::to_string(f->index)};
+    return DisplayImage{f->rgb, path_ + " frame " + std::to_string(f->index), f->index};
   }
   if (position_ >= files_.size()) return std::nullopt;
-  const std::string& file = files_[position_++].path;
-  if (linear_) return DisplayImage{read_exr(file, 400'000'000).rgb, file};
-  return DisplayImage{read_code_image(file), file};
+  const SequenceEntry& entry = files_[position_++];
+  if (linear_) return DisplayImage{read_exr(entry.path, 400'000'000).rgb, entry.path, entry.number};
+  return DisplayImage{read_code_image(entry.path), entry.path, entry.number};
 }
 
 }  // namespace eyestream::io

@@ -17,6 +17,7 @@ namespace eyestream::io {
 struct DisplayImage {
   cv::Mat rgb;  // CV_32FC3, R, G, B
   std::string name;  // file, or file and frame number, for messages
+  std::int64_t number = 0;  // the frame's number: in the file pattern, or the video's frame index
 };
 
 class DisplaySequence {

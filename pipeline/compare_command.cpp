@@ -11,6 +11,7 @@
 #include "io/display_sequence.hpp"
 #include "io/error.hpp"
 #include "io/frame_sequence.hpp"
+#include "io/png_file.hpp"
 #include "io/staged_file.hpp"
 #include "retina/colour_difference.hpp"
 
@@ -137,15 +138,14 @@ CompareResult compare(const CompareOptions& o) {
     overall.psnr = std::min(overall.psnr, m.psnr);
     overall.de_max = std::max(overall.de_max, m.de_max);
     const double v = judged(m, o.metric);
-    if (count == 0 || beyond(v, worst, o.metric)) worst = v, worst_frame = count;
+    if (count == 0 || beyond(v, worst, o.metric)) worst = v, worst_frame = fa->number;
     frames.push_back(to_json(m));
-    frames.back()["frame"] = count;
-    if (o.verbose) result.text += "frame " + std::to_string(count) + ": " + format_metrics(m) + "\n";
+    frames.back()["frame"] = fa->number;
+    if (o.verbose) result.text += "frame " + std::to_string(fa->number) + ": " + format_metrics(m) + "\n";
     if (!o.diff_out.empty()) {
-      std::vector<unsigned char> png;
-      cv::imencode(".png", heat_map(de, o.diff_scale), png);
-      diffs.emplace_back(io::format_pattern(o.diff_out, count));
-      io::write_all(diffs.back(), png);
+      // Named by the first input's frame number, so a map sits beside its frame.
+      diffs.emplace_back(io::format_pattern(o.diff_out, fa->number));
+      io::write_all(diffs.back(), io::encode_png(heat_map(de, o.diff_scale)));
     }
     ++count;
   }

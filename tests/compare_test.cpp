@@ -17,14 +17,14 @@ namespace {
 // `frames` PNGs of 64x48 in DIR/name/, grey `level` plus a coloured patch,
 // with `delta` added to every code value.
 std::string write_sequence(const test::ScratchDir& dir, const std::string& name, int frames, int delta,
-                           cv::Size size = cv::Size(64, 48)) {
+                           cv::Size size = cv::Size(64, 48), int first = 0) {
   std::filesystem::create_directories(dir.path() / name);
   for (int i = 0; i < frames; ++i) {
     cv::Mat img(size, CV_8UC3, cv::Scalar(120 + i, 128, 136));
     img(cv::Rect(8, 8, 16, 16)).setTo(cv::Scalar(40, 90, 200));
     img += cv::Scalar::all(delta);
     char file[32];
-    std::snprintf(file, sizeof(file), "/%05d.png", i);
+    std::snprintf(file, sizeof(file), "/%05d.png", first + i);
     cv::imwrite((dir.path() / name).string() + file, img);
   }
   return dir / (name + "/%05d.png");
@@ -113,6 +113,23 @@ TEST(Compare, WritesAJsonReportAndOneDifferenceImagePerFrame) {
   EXPECT_EQ(test::count_entries(dir.path() / "diff"), 3);
   const cv::Mat heat = cv::imread(dir / "diff/00000.png");
   EXPECT_EQ(heat.size(), cv::Size(64, 48));
+}
+
+// A chunk of a longer sequence (frames 120 to 122): the heat maps and the
+// report's frames carry the input's numbers, so each sits beside its frame.
+TEST(Compare, DiffMapsAreNamedByTheInputsFrameNumbers) {
+  test::ScratchDir dir;
+  const std::string a = write_sequence(dir, "a", 3, 0, cv::Size(64, 48), 120);
+  const std::string b = write_sequence(dir, "b", 3, 1, cv::Size(64, 48), 120);
+  const auto r = test::run_eyestream("compare " + a + " " + b + " --json " + (dir / "r.json") + " --diff-out " +
+                                     (dir / "diff/%05d.png"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(dir / "diff/00120.png"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "diff/00122.png"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "diff/00000.png"));
+  std::ifstream in(dir / "r.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["frames"][0]["frame"], 120);
 }
 
 // Flat colours encoded as BT.709 limited-range 4:2:0 H.264 decode back to
