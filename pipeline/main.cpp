@@ -10,10 +10,12 @@
 #include "io/frame_sequence.hpp"
 #include "io/source_factory.hpp"
 #include "io/video_concat.hpp"
+#include "io/staged_file.hpp"
 #include "pipeline/frame_buffer_pool.hpp"
 #include "pipeline/bench_chart.hpp"
 #include "pipeline/bench_command.hpp"
 #include "pipeline/chunk_plan.hpp"
+#include "pipeline/command_reference.hpp"
 #include "pipeline/compare_command.hpp"
 #include "pipeline/curves_command.hpp"
 #include "pipeline/exit_codes.hpp"
@@ -198,6 +200,15 @@ int main(int argc, char** argv) {
   bench_cmd->add_flag("-y,--overwrite", replace_files, "replace the CSV and the chart if they exist");
   bench_cmd->add_option("--threads", bench_threads, "worker threads; 0 uses all cores")->check(CLI::Range(0, 1024));
 
+  std::string reference_format = "md", reference_output;
+  CLI::App* reference_cmd = app.add_subcommand(
+      "reference", "write this command reference, generated from the option declarations (Markdown or a man page)");
+  reference_cmd->add_option("--format", reference_format, "md (docs/commands.md) or man (docs/eyestream.1)")
+      ->check(CLI::IsMember({"md", "man"}))
+      ->capture_default_str();
+  reference_cmd->add_option("-o,--output", reference_output, "file (default: standard output)");
+  reference_cmd->add_flag("-y,--overwrite", replace_files, "replace the file if it exists");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -279,6 +290,16 @@ int main(int argc, char** argv) {
       if (!replace_files) refuse_existing({{report_png, "-o"}});
       draw_report_file(report_csv, report_png);
       std::fprintf(stderr, "eyestream: wrote %s\n", report_png.c_str());
+    } else if (*reference_cmd) {
+      const std::string text = reference_format == "man" ? man_page(app) : markdown_reference(app);
+      if (reference_output.empty()) {
+        std::fputs(text.c_str(), stdout);
+      } else {
+        if (!replace_files) refuse_existing({{reference_output, "-o"}});
+        io::StagedFile file(reference_output);
+        io::write_all(file, std::vector<unsigned char>(text.begin(), text.end()));
+        file.commit();
+      }
     } else if (*sample_cmd) {
       const samples::Scene& s = samples::find_scene(scene_name);
       s.generate(scene);

@@ -134,7 +134,9 @@ void ParamSet::bind(CLI::App& app) {
   options_.clear();
   for (size_t i = 0; i < params_.size(); ++i) {
     const Param& p = params_[i];
-    std::string help = p.help + (p.unit.empty() ? "" : " [" + p.unit + "]") + " (default " + value_text(p);
+    const std::string value = p.shown_default.empty() ? value_text(p) : p.shown_default;
+    std::string help =
+        p.help + (p.unit.empty() ? "" : " [" + p.unit + "]") + " (default " + (value.empty() ? "none" : value);
     const std::string range = range_text(p);
     help += range.empty() ? ")" : "; " + range + ")";
     CLI::Option* opt = nullptr;

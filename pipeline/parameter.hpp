@@ -30,6 +30,7 @@ struct Param {
   ParamTarget target;
   double min = -1e300, max = 1e300;  // inclusive range for numbers
   std::vector<std::string> choices;  // allowed values for strings
+  std::string shown_default;         // what --help says the default is, when it depends on the machine
 };
 
 // Declarations by kind.

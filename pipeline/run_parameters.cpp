@@ -16,7 +16,9 @@ ParamSet run_parameters(Settings& s) {
   set.add(text("layer", "layer of layered EXRs (Blender's ViewLayer.Combined); default the beauty pass", in,
                &s.exr.layer));
   set.add(flag("skip-missing", "go on past missing frames of a numbered sequence", in, &s.exr.skip_missing));
-  set.add(number("max-pixels", "pixels", "refuse larger frames, before allocating (default: the machine's memory over 400 bytes a pixel)", in, &s.exr.max_pixels, 1, 4e9));
+  Param max_pixels = number("max-pixels", "pixels", "refuse larger frames, before allocating", in, &s.exr.max_pixels, 1, 4e9);
+  max_pixels.shown_default = "the machine's memory over 400 bytes a pixel";
+  set.add(max_pixels);
   set.add(choice("on-bad-video", "a video packet that does not decode, or a video that ends early: fail, or stop "
                  "there keeping what was read", in, &s.video_input.on_bad_video, {"fail", "stop"}));
   set.add(text("size", "WxH of raw float RGB frames on standard input (-i -)", in, &s.frame_size));
