@@ -160,13 +160,22 @@ Projection projection_from_name(const std::string& name) {
 
 const char* projection_name(Projection p) { return p == Projection::rectilinear ? "rectilinear" : "equidistant"; }
 
-FrameProjection::FrameProjection(int width, int height, double fov_deg, Projection kind)
-    : kind_(kind), frame_(width, height), plane_(width, height), fov_deg_(fov_deg), ppd_(width / fov_deg) {
+FrameProjection::FrameProjection(int width, int height, double fov_deg, Projection kind, double scale)
+    : kind_(kind), frame_(width, height), plane_(width, height), fov_deg_(fov_deg), scale_(scale),
+      frame_ppd_(width / fov_deg), ppd_(width / fov_deg) {
+  CV_Assert(scale > 0.0 && scale <= 1.0);
   if (identity()) return;
-  f_px_ = 0.5 * width / std::tan(0.5 * fov_deg * kDeg);
-  ppd_ = f_px_ * kDeg;
-  plane_ = cv::Size(int(std::ceil(2.0 * f_px_ * std::atan(0.5 * width / f_px_))),
-                    int(std::ceil(2.0 * f_px_ * std::atan(0.5 * height / f_px_))));
+  if (kind == Projection::equidistant) {
+    ppd_ = frame_ppd_ * scale;
+    plane_ = cv::Size(int(std::ceil(width * scale)), int(std::ceil(height * scale)));
+  } else {
+    f_px_ = 0.5 * width / std::tan(0.5 * fov_deg * kDeg);
+    fp_ = f_px_ * scale;
+    frame_ppd_ = f_px_ * kDeg;
+    ppd_ = fp_ * kDeg;
+    plane_ = cv::Size(int(std::ceil(2.0 * fp_ * std::atan(0.5 * width / f_px_))),
+                      int(std::ceil(2.0 * fp_ * std::atan(0.5 * height / f_px_))));
+  }
   positions_.create(frame_, CV_32FC2);
   cv::parallel_for_(cv::Range(0, height), [&](const cv::Range& r) {
     for (int y = r.start; y < r.end; ++y) {
@@ -182,7 +191,9 @@ FrameProjection::FrameProjection(int width, int height, double fov_deg, Projecti
   flux_ratio_.create(plane_, CV_32F);
   for (int v = 0; v < plane_.height; ++v)
     for (int u = 0; u < plane_.width; ++u) {
-      const double theta = std::hypot(u + 0.5 - 0.5 * plane_.width, v + 0.5 - 0.5 * plane_.height) / f_px_;
+      const double theta = kind_ == Projection::equidistant
+                               ? 0.0  // angle-uniform: one solid angle per pixel, as the identity takes it
+                               : std::hypot(u + 0.5 - 0.5 * plane_.width, v + 0.5 - 0.5 * plane_.height) / fp_;
       flux_ratio_.at<float>(v, u) = float(theta > 0.0 ? std::sin(theta) / theta : 1.0);
     }
   // The fixed splat's row reach and normalisation (the sum of b over the
@@ -211,7 +222,7 @@ FrameProjection::FrameProjection(int width, int height, double fov_deg, Projecti
 }
 
 cv::Size2d FrameProjection::retina_reach() const {
-  if (identity()) return {double(frame_.width), double(frame_.height)};
+  if (kind_ == Projection::equidistant) return {frame_.width * scale_, frame_.height * scale_};
   // The largest offsets, across and down, of any frame point seen from any
   // gaze on the frame: both on its edge (the offsets grow outward), so
   // sampled densely along the edge for the gaze and for the point.
@@ -236,32 +247,34 @@ cv::Size2d FrameProjection::retina_reach() const {
 }
 
 cv::Vec2d FrameProjection::gaze_offset(cv::Point2d gaze, cv::Point2d p) const {
-  if (identity()) return {p.x - gaze.x, p.y - gaze.y};
+  if (kind_ == Projection::equidistant) return {(p.x - gaze.x) * scale_, (p.y - gaze.y) * scale_};
   const cv::Vec3d ez = cv::normalize(cv::Vec3d(gaze.x - 0.5 * frame_.width, gaze.y - 0.5 * frame_.height, f_px_));
   const cv::Vec3d ex = cv::normalize(cv::Vec3d(1, 0, 0) - ez[0] * ez), ey = ez.cross(ex);
   const cv::Vec3d d(p.x - 0.5 * frame_.width, p.y - 0.5 * frame_.height, f_px_);
   const double a = d.dot(ex), b = d.dot(ey), c = d.dot(ez), s = std::hypot(a, b);
-  const double k = s > 0.0 ? f_px_ * std::atan2(s, c) / s : 0.0;
+  const double k = s > 0.0 ? fp_ * std::atan2(s, c) / s : 0.0;
   return {k * a, k * b};
 }
 
 cv::Point2d FrameProjection::to_plane(cv::Point2d p) const {
   if (identity()) return p;
+  if (kind_ == Projection::equidistant) return p * scale_;
   const double X = p.x - 0.5 * frame_.width, Y = p.y - 0.5 * frame_.height, r = std::hypot(X, Y);
-  const double s = r > 0.0 ? f_px_ * std::atan(r / f_px_) / r : 1.0;
+  const double s = r > 0.0 ? fp_ * std::atan(r / f_px_) / r : scale_;
   return {0.5 * plane_.width + X * s, 0.5 * plane_.height + Y * s};
 }
 
 cv::Point2d FrameProjection::to_frame(cv::Point2d q) const {
   if (identity()) return q;
+  if (kind_ == Projection::equidistant) return q / scale_;
   const double U = q.x - 0.5 * plane_.width, V = q.y - 0.5 * plane_.height, rho = std::hypot(U, V);
-  const double theta = std::min(rho / f_px_, 0.5 * M_PI - 1e-6);
-  const double s = rho > 0.0 ? f_px_ * std::tan(theta) / rho : 1.0;
+  const double theta = std::min(rho / fp_, 0.5 * M_PI - 1e-6);
+  const double s = rho > 0.0 ? f_px_ * std::tan(theta) / rho : 1.0 / scale_;
   return {0.5 * frame_.width + U * s, 0.5 * frame_.height + V * s};
 }
 
 double FrameProjection::angle_deg(cv::Point2d a, cv::Point2d b) const {
-  if (identity()) return std::hypot(a.x - b.x, a.y - b.y) / ppd_;
+  if (kind_ == Projection::equidistant) return std::hypot(a.x - b.x, a.y - b.y) / frame_ppd_;
   const auto direction = [&](cv::Point2d p) {
     return cv::Vec3d(p.x - 0.5 * frame_.width, p.y - 0.5 * frame_.height, f_px_) /
            std::sqrt(std::pow(p.x - 0.5 * frame_.width, 2) + std::pow(p.y - 0.5 * frame_.height, 2) + f_px_ * f_px_);
@@ -271,21 +284,21 @@ double FrameProjection::angle_deg(cv::Point2d a, cv::Point2d b) const {
 }
 
 cv::Vec2d FrameProjection::local_pixels_per_degree(cv::Point2d p) const {
-  if (identity()) return {ppd_, ppd_};
+  if (kind_ == Projection::equidistant) return {frame_ppd_, frame_ppd_};
   const double x = (p.x - 0.5 * frame_.width) / f_px_, y = (p.y - 0.5 * frame_.height) / f_px_;
   const double n2 = 1.0 + x * x + y * y;
-  return {ppd_ * n2 / std::sqrt(1.0 + y * y), ppd_ * n2 / std::sqrt(1.0 + x * x)};
+  return {frame_ppd_ * n2 / std::sqrt(1.0 + y * y), frame_ppd_ * n2 / std::sqrt(1.0 + x * x)};
 }
 
 double FrameProjection::solid_angle_deg2() const {
-  if (identity()) return (frame_.width / ppd_) * (frame_.height / ppd_);
+  if (kind_ == Projection::equidistant) return (frame_.width / frame_ppd_) * (frame_.height / frame_ppd_);
   const double a = 0.5 * frame_.width / f_px_, b = 0.5 * frame_.height / f_px_;
   return 4.0 * std::atan(a * b / std::sqrt(1.0 + a * a + b * b)) / (kDeg * kDeg);
 }
 
 cv::Mat FrameProjection::solid_angle_weights() const {
   cv::Mat w(frame_, CV_32F, cv::Scalar(1.0));
-  if (identity()) return w;
+  if (kind_ == Projection::equidistant) return w;
   for (int y = 0; y < frame_.height; ++y)
     for (int x = 0; x < frame_.width; ++x) {
       const double X = (x + 0.5 - 0.5 * frame_.width) / f_px_, Y = (y + 0.5 - 0.5 * frame_.height) / f_px_;

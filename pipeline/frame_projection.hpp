@@ -35,16 +35,18 @@ const char* projection_name(Projection p);
 
 class FrameProjection {
  public:
-  // A width x height frame whose horizontal field of view is fov_deg.
-  FrameProjection(int width, int height, double fov_deg, Projection kind);
+  // A width x height frame whose horizontal field of view is fov_deg; the
+  // plane has `scale` times the frame's px/deg at its centre (1: the same;
+  // 0.5: a quarter of the pixels, for a cheaper convolution).
+  FrameProjection(int width, int height, double fov_deg, Projection kind, double scale = 1.0);
 
   Projection kind() const { return kind_; }
-  // True when the frame is its own angle plane (equidistant): every
-  // conversion below is the identity and nothing needs resampling.
-  bool identity() const { return kind_ == Projection::equidistant; }
+  // True when the frame is its own angle plane (equidistant, at scale 1):
+  // every conversion below is the identity and nothing needs resampling.
+  bool identity() const { return kind_ == Projection::equidistant && scale_ == 1.0; }
   cv::Size frame_size() const { return frame_; }
   cv::Size plane_size() const { return plane_; }
-  // The plane's pixels per degree: the frame's at its centre.
+  // The plane's pixels per degree: the frame's at its centre times the scale.
   double pixels_per_degree() const { return ppd_; }
 
   // Points, origin at the top-left corner of the top-left pixel.
@@ -98,7 +100,9 @@ class FrameProjection {
  private:
   Projection kind_;
   cv::Size frame_, plane_;
-  double fov_deg_, f_px_ = 0.0, ppd_;
+  double fov_deg_, scale_;
+  double f_px_ = 0.0, fp_ = 0.0;  // rectilinear: the frame's focal length, the plane's (f_px_ scale), in px
+  double frame_ppd_, ppd_;        // the frame's px/deg at its centre, and the plane's
   cv::Mat positions_;           // CV_32FC2, frame-sized
   cv::Mat remap1_, remap2_;     // positions as cv::remap's fixed-point maps
   cv::Mat flux_ratio_;          // CV_32F, plane-sized: sin(theta) / theta

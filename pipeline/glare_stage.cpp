@@ -9,10 +9,17 @@
 
 namespace eyestream::pipeline {
 
-GlareStage::GlareStage(const Plan& plan) : plan_(plan), optics_(plan.eye_optics()) {
-  const cv::Size plane = plan.plane_size();
+GlareStage::GlareStage(const Plan& plan)
+    : plan_(plan),
+      optics_(plan.eye_optics()),
+      plane_(plan.glare.plane_scale == 1.0
+                 ? plan.projection
+                 : std::make_shared<const FrameProjection>(plan.width, plan.height, plan.fov_deg,
+                                                           plan.projection->kind(), plan.glare.plane_scale)),
+      ppd_(plane_->pixels_per_degree()) {
+  const cv::Size plane = plane_->plane_size();
   if (plan.glare.gaussian) {  // no kernels: a separable blur does the work
-    const double sigma = plan.glare.gaussian_sigma_deg * plan.pixels_per_degree;
+    const double sigma = plan.glare.gaussian_sigma_deg * ppd_;
     const cv::Mat g = cv::getGaussianKernel(cvRound(sigma * 8 + 1) | 1, sigma, CV_64F);  // GaussianBlur's, for floats
     const double centre = g.at<double>(g.rows / 2) * g.at<double>(g.rows / 2);
     for (cv::Vec3d& c : centre_) c = cv::Vec3d::all(centre);
@@ -24,8 +31,8 @@ GlareStage::GlareStage(const Plan& plan) : plan_(plan), optics_(plan.eye_optics(
   // On an angle plane the engines spread only the light that leaves its
   // pixel (their kernels' centre pixel 0); the rest stays on the frame's
   // pixels (spread()).
-  const bool with_centre = plan.projection->identity();
-  const glare::ComponentKernels centre = glare::build_component_kernels(1, 1, plan.pixels_per_degree, optics_);
+  const bool with_centre = plane_->identity();
+  const glare::ComponentKernels centre = glare::build_component_kernels(1, 1, ppd_, optics_);
   for (int ch = 0; ch < 3; ++ch) {
     centre_[0][ch] = centre.core.at<double>(0, 0);
     centre_[1][ch] = centre.inner.at<double>(0, 0);
@@ -33,9 +40,9 @@ GlareStage::GlareStage(const Plan& plan) : plan_(plan), optics_(plan.eye_optics(
     centre_[3][ch] = centre.halo[ch].at<double>(0, 0);
   }
   if (plan.glare.tail_factor <= 1 || plan.report)
-    kernels_ = glare::build_component_kernels(plane.width, plane.height, plan.pixels_per_degree, optics_);
+    kernels_ = glare::build_component_kernels(plane.width, plane.height, ppd_, optics_);
   if (plan.glare.tail_factor > 1) {
-    split_ = std::make_unique<glare::SplitConvolver>(plane.width, plane.height, plan.pixels_per_degree,
+    split_ = std::make_unique<glare::SplitConvolver>(plane.width, plane.height, ppd_,
                                                      plan.glare.tail_factor, optics_, with_centre);
   } else {
     // The engine copies the kernels' spectra: the centre is dropped for it
@@ -66,8 +73,8 @@ std::optional<double> GlareStage::veil_at(const cv::Mat& luminance, double adapt
                                           double y, double exclusion_deg) const {
   if (plan_.glare.gaussian || kernels_.core.empty()) return std::nullopt;
   const glare::PsfWeights w = optics_.weights(adaptation_log, pupil_mm);
-  const double exclusion_px = exclusion_deg * plan_.pixels_per_degree;
-  const FrameProjection& p = *plan_.projection;
+  const double exclusion_px = exclusion_deg * ppd_;
+  const FrameProjection& p = *plane_;
   if (p.identity()) return glare::veiling_luminance(luminance, kernels_, w, x, y, exclusion_px);
   // On the angle plane (each pixel's luminance times its solid angle),
   // between the four plane pixels around the point, as the picture is.
@@ -88,7 +95,7 @@ cv::Vec3f GlareStage::kept_share(const glare::PsfWeights& w) const {
 }
 
 cv::Mat GlareStage::spread(const cv::Mat& rgb, const glare::PsfWeights& w) const {
-  const FrameProjection& p = *plan_.projection;
+  const FrameProjection& p = *plane_;
   if (p.identity()) return spread_plane(rgb, w);
   // The plane carries the light that leaves its pixel; the light the PSF
   // keeps there stays on the frame's pixels, sharp.
@@ -115,7 +122,7 @@ cv::Mat GlareStage::spread(const cv::Mat& rgb, const glare::PsfWeights& w) const
 cv::Mat GlareStage::spread_plane(const cv::Mat& rgb, const glare::PsfWeights& w) const {
   if (plan_.glare.gaussian) {
     // Yoshida et al. 2008: a Gaussian of sigma 0.34 deg; light leaving the frame is lost.
-    const double sigma = plan_.glare.gaussian_sigma_deg * plan_.pixels_per_degree;
+    const double sigma = plan_.glare.gaussian_sigma_deg * ppd_;
     cv::Mat out;
     cv::GaussianBlur(rgb, out, cv::Size(0, 0), sigma, sigma, cv::BORDER_CONSTANT);
     return out;

@@ -62,6 +62,10 @@ class GlareStage {
 
   const Plan plan_;
   const glare::EyeOptics optics_;
+  // The angle plane of the convolution (the plan's, or one at
+  // plan.glare.plane_scale of its resolution) and its px/deg.
+  std::shared_ptr<const FrameProjection> plane_;
+  double ppd_;
   glare::ComponentKernels kernels_;
   std::unique_ptr<glare::FftConvolver> convolver_;     // exact engine
   std::unique_ptr<glare::SplitConvolver> split_;       // or the split one

@@ -40,6 +40,7 @@ struct GlarePlan {
   glare::PsfModel model = glare::PsfModel::vos;
   bool flare_lines = true;
   int tail_factor = 1;               // Vos PSF: 1 exact FFT engine; >= 2 split engine, tail reduced this much
+  double plane_scale = 1.0;          // the convolution's px/deg over the frame's at its centre
   double gaussian_sigma_deg = 0.34;  // Yoshida et al. 2008
   bool full = false;
   double display_peak_cd_m2 = 100.0;

@@ -11,6 +11,7 @@ void apply_quality_preset(const std::string& name, Settings& s) {
     s.substep_tolerance_deg = 0.0;
     s.psf_model = "vos";
     s.glare_engine = "exact";
+    s.glare_resolution = 1.0;
     s.acuity.pyramid_from_px = 0.0;
     s.sink.video.preset = "medium";
   } else if (name == "balanced") {
@@ -20,6 +21,7 @@ void apply_quality_preset(const std::string& name, Settings& s) {
     s.psf_model = "vos";
     s.glare_engine = "split";
     s.glare_tail_factor = 2;
+    s.glare_resolution = 1.0;
     s.acuity.pyramid_from_px = 6.0;
     s.sink.video.preset = "faster";
   } else if (name == "fast") {
@@ -29,6 +31,7 @@ void apply_quality_preset(const std::string& name, Settings& s) {
     s.psf_model = "vos";
     s.glare_engine = "split";
     s.glare_tail_factor = 4;
+    s.glare_resolution = 0.5;
     s.acuity.pyramid_from_px = 3.0;
     s.sink.video.preset = "veryfast";
   } else {

@@ -90,6 +90,8 @@ ParamSet run_parameters(Settings& s) {
                  optics, &s.glare_engine, {"exact", "split"}));
   set.add(number("glare-tail-factor", "", "the split engine's reduction of the PSF's tail", optics,
                  &s.glare_tail_factor, 2, 16));
+  set.add(number("glare-resolution", "", "the convolution's pixels per degree over the frame's (at its centre), never "
+                 "below 20 px/deg; the light the PSF keeps in a pixel stays sharp at any value", optics, &s.glare_resolution, 0.125, 1));
   set.add(choice("glare-mode",
                  "the whole retinal image through the PSF, the eye (full), or only the light above the display "
                  "peak, for an HDR display that shows the rest (excess)",

@@ -63,6 +63,7 @@ struct Settings {
   bool flare_lines = true;            // radial streaks of corona and halo (glare/flare_lines.hpp)
   std::string glare_engine = "exact"; // Vos PSF: exact (full-resolution FFT) or split (tail at reduced resolution)
   int glare_tail_factor = 4;          // the split engine's reduction of the tail
+  double glare_resolution = 1.0;      // the convolution's px/deg over the frame's (the light kept in a pixel stays sharp)
   std::string glare_mode = "full";    // full: the eye, everything through the PSF; excess: the light above the display peak
   double display_peak_cd_m2 = 100.0;  // L_dmax (MODEL.md 0)
 
