@@ -1,5 +1,5 @@
 # Times Blender's Fog Glow (compositor Glare node) on one EXR frame, for the
-# README's comparison with eyestream's glare engines. Not part of the build
+# comparison in docs/performance.md with eyestream's glare engines. Not part of the build
 # or the tests: it needs Blender (Debian package `blender`).
 #
 #   blender -b --factory-startup --python bench/fog_glow.py -- IN.exr OUT.exr [THRESHOLD] [RUNS]

@@ -15,7 +15,7 @@ struct ChunkRequest {
   std::string program = "eyestream";  // as the commands should call it
   std::string input, output;          // output: a video pattern with %d (chunk number) or a frame pattern
   std::int64_t chunk_frames = 0;
-  double preroll_s = 10.0;  // measured: the README's pre-roll table
+  double preroll_s = 10.0;  // measured: the pre-roll table in docs/usage.md
   std::vector<std::string> run_options;  // passed to every chunk's run
 };
 

@@ -5,7 +5,7 @@
 // image does not depend on how finely the grid samples it. (With the
 // optics off, --no-glare, a source smaller than a site bleaches the whole
 // site at its diluted intensity: the integral then varies several times
-// across these resolutions; README, departures.)
+// across these resolutions; docs/model.md, departures.)
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,0 +1,160 @@
+#include "eyestream/eye.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "io/error.hpp"
+#include "io/frame_source.hpp"
+#include "pipeline/eye_simulator.hpp"
+#include "pipeline/gaze_timeline.hpp"
+#include "pipeline/parameter.hpp"
+#include "pipeline/plan.hpp"
+#include "pipeline/quality_presets.hpp"
+#include "pipeline/settings.hpp"
+#include "retina/display_encoding.hpp"
+
+namespace eyestream {
+
+namespace {
+
+// The command line's exceptions as Error, with its exit codes.
+template <typename F>
+auto translated(F&& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const UsageError& e) {
+    throw Error(e.what(), 2);
+  } catch (const InputError& e) {
+    throw Error(e.what(), 3);
+  } catch (const OutputError& e) {
+    throw Error(e.what(), 4);
+  }
+}
+
+pipeline::Settings compile_settings(const std::map<std::string, std::string>& given) {
+  pipeline::Settings s;
+  std::map<std::string, std::string> named;
+  for (const auto& [key, value] : given) {
+    std::string name = key;
+    std::replace(name.begin(), name.end(), '_', '-');
+    named[name] = value;
+  }
+  if (named.count("quality")) s.quality = named["quality"];
+  pipeline::apply_quality_preset(s.quality, s);
+  pipeline::ParamSet params = pipeline::run_parameters(s);
+  nlohmann::json object = nlohmann::json::object();
+  for (const auto& [name, value] : named) object[name] = value;
+  params.apply_json(object, "eyestream::Eye settings");
+  return s;
+}
+
+}  // namespace
+
+struct Eye::Impl {
+  pipeline::Plan plan;
+  pipeline::EyeSimulator eye;
+  int bits = 8;  // of the encoded frame
+  std::int64_t index = 0;
+  // The gaze carried from earlier frames: the last sample, and the last
+  // with a position (a lost sample holds it).
+  std::vector<io::GazeSample> carried;
+
+  Impl(pipeline::Plan p) : plan(p), eye(std::move(p)) {}
+
+  std::vector<pipeline::GazeSegment> segments(const std::vector<Gaze>& gaze, double t0, double t1) {
+    std::vector<io::GazeSample> samples = carried;
+    for (const Gaze& g : gaze) {
+      if (!std::isfinite(g.t_s) || !std::isfinite(g.x) || !std::isfinite(g.y))
+        throw UsageError("a gaze sample of frame " + std::to_string(index) + " is not finite");
+      samples.push_back({g.t_s, g.x, g.y, g.closed ? io::EyeState::kClosed : io::EyeState::kOpen});
+    }
+    std::stable_sort(samples.begin(), samples.end(),
+                     [](const io::GazeSample& a, const io::GazeSample& b) { return a.t_s < b.t_s; });
+    const pipeline::GazeTimeline timeline(samples, plan.width / 2.0, plan.height / 2.0);
+    if (!samples.empty()) carried = {samples.back()};
+    return timeline.segments(t0, t1);
+  }
+};
+
+Eye::Eye(int width, int height, double fps, const std::map<std::string, std::string>& settings) {
+  translated([&] {
+    if (width < 1 || height < 1 || !(fps > 0.0))
+      throw UsageError("an eye needs a positive size and frame rate, not " + std::to_string(width) + "x" +
+                                 std::to_string(height) + " at " + std::to_string(fps) + " fps");
+    io::SourceInfo info;
+    info.width = width;
+    info.height = height;
+    info.frames_per_second = fps;
+    const pipeline::Settings s = compile_settings(settings);
+    impl_ = std::make_unique<Impl>(pipeline::compile_plan(s, info));
+    impl_->bits = s.sink.png_bits;
+    return 0;
+  });
+}
+
+Eye::~Eye() = default;
+Eye::Eye(Eye&&) noexcept = default;
+Eye& Eye::operator=(Eye&&) noexcept = default;
+
+int Eye::width() const { return impl_->plan.width; }
+int Eye::height() const { return impl_->plan.height; }
+double Eye::fps() const { return impl_->plan.frames_per_second; }
+std::string Eye::describe() const { return impl_->plan.describe(); }
+
+Frame Eye::process(const cv::Mat& rgb, const std::vector<Gaze>& gaze) {
+  return translated([&] {
+    if (rgb.type() != CV_32FC3 || rgb.cols != width() || rgb.rows != height())
+      throw UsageError("frame " + std::to_string(impl_->index) + " is not a " + std::to_string(width()) +
+                                 "x" + std::to_string(height()) + " float RGB image");
+    const double t0 = double(impl_->index) / fps(), t1 = double(impl_->index + 1) / fps();
+    const io::SceneFrame scene{rgb, t0, impl_->index, "frame " + std::to_string(impl_->index)};
+    pipeline::FrameReport r;
+    io::DisplayFrame shown = impl_->eye.process(scene, impl_->segments(gaze, t0, t1), &r);
+    Frame out;
+    out.linear = shown.linear;
+    retina::encode_display(out.linear, impl_->bits, impl_->index, impl_->plan.encoding, out.code);
+    out.report = {std::pow(10.0, r.adaptation_log), impl_->eye.save().pupil_mm.value_or(0.0), r.gaze_x, r.gaze_y,
+                  r.eye_closed, r.active.glare, r.active.retina, r.active.mesopic, r.active.afterimages};
+    ++impl_->index;
+    return out;
+  });
+}
+
+Frame Eye::process(const float* rgb, std::size_t stride_bytes, const std::vector<Gaze>& gaze) {
+  const cv::Mat view(height(), width(), CV_32FC3, const_cast<float*>(rgb), stride_bytes);
+  return process(view, gaze);
+}
+
+Eye::State Eye::state() const {
+  const pipeline::EyeMemory m = impl_->eye.save();
+  State s;
+  s.mats = m.retina;
+  s.numbers = {double(impl_->index), m.adaptation_log.value_or(NAN), m.pupil_mm.value_or(NAN),
+               m.retina_started ? 1.0 : 0.0};
+  for (const io::GazeSample& g : impl_->carried)
+    s.numbers.insert(s.numbers.end(), {g.t_s, g.x, g.y, double(int(g.state))});
+  return s;
+}
+
+void Eye::restore(const State& s) {
+  translated([&] {
+    if (s.numbers.size() < 4 || (s.numbers.size() - 4) % 4 != 0)
+      throw UsageError("the eye's state is malformed");
+    pipeline::EyeMemory m;
+    m.retina = s.mats;
+    if (std::isfinite(s.numbers[1])) m.adaptation_log = s.numbers[1];
+    if (std::isfinite(s.numbers[2])) m.pupil_mm = s.numbers[2];
+    m.retina_started = s.numbers[3] != 0.0;
+    const std::string problem = impl_->eye.memory_error(m);
+    if (!problem.empty()) throw UsageError("the eye's state does not fit this eye: " + problem);
+    impl_->eye.restore(m);
+    impl_->index = std::int64_t(s.numbers[0]);
+    impl_->carried.clear();
+    for (size_t i = 4; i + 3 < s.numbers.size(); i += 4)
+      impl_->carried.push_back({s.numbers[i], s.numbers[i + 1], s.numbers[i + 2], io::EyeState(int(s.numbers[i + 3]))});
+    return 0;
+  });
+}
+
+}  // namespace eyestream

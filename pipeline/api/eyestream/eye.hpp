@@ -1,0 +1,93 @@
+// eyestream as a library: one viewer's eye, compiled once from the same
+// parameter table the command line uses, then fed frame by frame (the
+// OpenColorIO idea: a config compiled into a processor applied to many
+// images). The command line's model path is the one used here: no second
+// path through the model.
+//
+//   eyestream::Eye eye(1920, 1080, 60.0, {{"quality", "fast"}, {"viewer-age", "70"}});
+//   eyestream::Frame out = eye.process(rgb_cd_m2, {{t, x, y}});   // out.linear, out.code, out.report
+//
+// Errors are eyestream::Error carrying the command line's one-line message.
+#pragma once
+
+#include <cstddef>
+#include <map>
+#include <memory>
+#include <opencv2/core.hpp>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace eyestream {
+
+// An error with the message the command line prints after "eyestream:
+// error:" and its exit code (2 usage, 3 input, 4 output).
+class Error : public std::runtime_error {
+ public:
+  Error(const std::string& message, int exit_code) : std::runtime_error(message), exit_code_(exit_code) {}
+  int exit_code() const { return exit_code_; }
+
+ private:
+  int exit_code_;
+};
+
+// A gaze sample: seconds from the first frame, frame pixels (origin at the
+// top-left corner), and whether the eye is closed (a blink).
+struct Gaze {
+  double t_s = 0.0, x = 0.0, y = 0.0;
+  bool closed = false;
+};
+
+// What happened to one frame.
+struct FrameReport {
+  double adaptation_cd_m2 = 0.0;
+  double pupil_mm = 0.0;
+  double gaze_x = 0.0, gaze_y = 0.0;
+  bool eye_closed = false;
+  bool glare = false, retina = false, mesopic = false, afterimages = false;  // which stages worked
+};
+
+struct Frame {
+  cv::Mat linear;  // display-linear RGB, CV_32FC3, 1 = the display's peak
+  cv::Mat code;    // encoded and dithered RGB, CV_8UC3 (or CV_16UC3 with "png-bits" 16)
+  FrameReport report;
+};
+
+class Eye {
+ public:
+  // A width x height stream at fps frames/s. `settings` maps parameter
+  // names to values as on the command line ("viewer-age" -> "70"; "_" may
+  // stand for "-"), "quality" choosing the preset the others override.
+  Eye(int width, int height, double fps, const std::map<std::string, std::string>& settings = {});
+  ~Eye();
+  Eye(Eye&&) noexcept;
+  Eye& operator=(Eye&&) noexcept;
+
+  // The next frame: linear Rec.709 RGB in cd/m^2 (CV_32FC3, width x
+  // height) and the gaze samples inside its interval [n / fps, (n + 1) /
+  // fps). Without samples the last gaze holds, as on the command line.
+  Frame process(const cv::Mat& rgb_cd_m2, const std::vector<Gaze>& gaze = {});
+  // The same for a plain pointer: height rows of width x 3 floats, rows
+  // `stride_bytes` apart (not copied).
+  Frame process(const float* rgb_cd_m2, std::size_t stride_bytes, const std::vector<Gaze>& gaze = {});
+
+  // The eye's state between frames (the checkpoint's contents), to resume.
+  struct State {
+    std::vector<cv::Mat> mats;
+    std::vector<double> numbers;
+  };
+  State state() const;
+  void restore(const State& state);
+
+  // The resolved settings, one "name = value" line each.
+  std::string describe() const;
+  int width() const;
+  int height() const;
+  double fps() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace eyestream

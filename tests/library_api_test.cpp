@@ -1,0 +1,101 @@
+// The library API (eyestream/eye.hpp): the command line's model path, bit
+// for bit; settings by the command line's names, with its messages; the
+// eye's state saved and restored; frames by pointer and stride.
+#include <eyestream/eye.hpp>
+#include <gtest/gtest.h>
+
+#include "io/exr_file.hpp"
+#include "io/exr_sequence_source.hpp"
+#include "io/gaze_import.hpp"
+#include "tests/test_support.hpp"
+
+namespace eyestream {
+namespace {
+
+struct Clip {
+  std::vector<cv::Mat> frames;
+  std::vector<std::vector<Gaze>> gaze;  // per frame, the samples in its interval
+  double fps = 30.0;
+};
+
+Clip load_clip(const test::ScratchDir& dir) {
+  Clip c;
+  io::ExrSequenceSource source(dir / "h/frames", {});
+  c.fps = source.info().frames_per_second;
+  io::GazeImportOptions o;
+  o.frame_width = source.info().width;
+  o.frame_height = source.info().height;
+  const std::vector<io::GazeSample> samples = io::read_gaze(dir / "h/gaze.csv", o);
+  while (auto f = source.next()) {
+    const double t0 = f->index / c.fps, t1 = (f->index + 1) / c.fps;
+    std::vector<Gaze> in;
+    for (const io::GazeSample& s : samples)
+      if (s.t_s >= t0 && s.t_s < t1) in.push_back({s.t_s, s.x, s.y, s.state == io::EyeState::kClosed});
+    c.frames.push_back(f->rgb.clone());
+    c.gaze.push_back(in);
+  }
+  return c;
+}
+
+TEST(LibraryApi, AnEyeComputesWhatTheCommandLineComputes) {
+  test::ScratchDir dir;
+  ASSERT_EQ(test::run_eyestream("sample headlights -o " + (dir / "h") + " --width 64 --height 36 --duration 0.4")
+                .exit_code,
+            0);
+  const auto r = test::run_eyestream("run -i " + (dir / "h/frames") + " -g " + (dir / "h/gaze.csv") + " -o " +
+                                     (dir / "e/%05d.exr") + " --quality fast --viewer-age 70");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const Clip clip = load_clip(dir);
+  ASSERT_GE(clip.frames.size(), 10u);
+  Eye eye(64, 36, clip.fps, {{"quality", "fast"}, {"viewer_age", "70"}});
+  for (size_t i = 0; i < clip.frames.size(); ++i) {
+    const Frame out = eye.process(clip.frames[i], clip.gaze[i]);
+    char name[32];
+    std::snprintf(name, sizeof name, "e/%05d.exr", int(i));
+    const io::ExrImage cli = io::read_exr(dir / name, 1 << 20);
+    ASSERT_EQ(cv::norm(out.linear, cli.rgb, cv::NORM_INF), 0.0) << "frame " << i;
+    EXPECT_EQ(out.code.type(), CV_8UC3);
+    EXPECT_GT(out.report.adaptation_cd_m2, 0.0);
+    EXPECT_GT(out.report.pupil_mm, 1.0);
+  }
+}
+
+TEST(LibraryApi, SettingsByTheCommandLinesNamesAndItsMessages) {
+  EXPECT_NO_THROW(Eye(32, 18, 30.0, {{"viewer-age", "70"}, {"quality", "reference"}}));
+  try {
+    Eye(32, 18, 30.0, {{"viewer-agee", "70"}});
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.exit_code(), 2);
+    EXPECT_NE(std::string(e.what()).find("did you mean 'viewer-age'?"), std::string::npos) << e.what();
+  }
+  try {
+    Eye(32, 18, 30.0, {{"viewer-age", "500"}});
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("viewer-age"), std::string::npos) << e.what();
+  }
+  Eye eye(32, 18, 30.0);
+  EXPECT_THROW(eye.process(cv::Mat(17, 32, CV_32FC3, cv::Scalar::all(1.0))), Error);
+}
+
+TEST(LibraryApi, StateRestoresAndPointersWork) {
+  test::ScratchDir dir;
+  ASSERT_EQ(test::run_eyestream("sample headlights -o " + (dir / "h") + " --width 64 --height 36 --duration 0.3")
+                .exit_code,
+            0);
+  const Clip clip = load_clip(dir);
+  Eye a(64, 36, clip.fps), b(64, 36, clip.fps);
+  for (size_t i = 0; i < 4; ++i) a.process(clip.frames[i], clip.gaze[i]);
+  b.restore(a.state());
+  for (size_t i = 4; i < clip.frames.size(); ++i) {
+    const Frame fa = a.process(clip.frames[i], clip.gaze[i]);
+    const cv::Mat& m = clip.frames[i];
+    const Frame fb = b.process(m.ptr<float>(), m.step, clip.gaze[i]);
+    ASSERT_EQ(cv::norm(fa.linear, fb.linear, cv::NORM_INF), 0.0) << "frame " << i;
+    ASSERT_EQ(cv::norm(fa.code, fb.code, cv::NORM_INF), 0.0) << "frame " << i;
+  }
+}
+
+}  // namespace
+}  // namespace eyestream
