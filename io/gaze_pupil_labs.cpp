@@ -61,19 +61,12 @@ bool neon_true(const std::string& v) {
 
 bool has(const std::vector<std::string>& row, int c) { return c >= 0 && c < int(row.size()) && !row[size_t(c)].empty(); }
 
-}  // namespace
-
-// Neon: timestamp [ns] (UTC), gaze x/y [px] in the 1600x1200 scene camera,
-// worn (0/1, 0.0/1.0 or true/false), blink id (non-empty during a blink).
-std::vector<GazeSample> parse_neon(const std::string& text, const std::string& name, const GazeImportOptions& o,
-                                   GazeNotes& notes) {
-  DelimitedTable t = parse_delimited(text, ',');
-  keep_recording(t, t.column("recording id"), o.recording, name, notes);
-  const int ct = require(t, "timestamp [ns]", name), cx = require(t, "gaze x [px]", name),
-            cy = require(t, "gaze y [px]", name);
-  const int cw = t.column("worn"), cb = t.column("blink id");
-  const double sx = double(o.frame_width) / (o.source_width > 0 ? o.source_width : 1600);
-  const double sy = double(o.frame_height) / (o.source_height > 0 ? o.source_height : 1200);
+// The rows of a Neon table: timestamp [ns] (UTC); the position (x sx,
+// y sy) when it is there and the glasses are worn (column cw; -1: always);
+// closed during a blink (a non-empty blink id).
+std::vector<GazeSample> neon_rows(const DelimitedTable& t, const std::string& name, int ct, int cx, int cy, int cw,
+                                  double sx, double sy) {
+  const int cb = t.column("blink id");
   std::vector<GazeSample> out;
   for (size_t r = 0; r < t.rows.size(); ++r) {
     const std::vector<std::string>& row = t.rows[r];
@@ -92,6 +85,21 @@ std::vector<GazeSample> parse_neon(const std::string& text, const std::string& n
   return out;
 }
 
+}  // namespace
+
+// Neon: gaze x/y [px] in the 1600x1200 scene camera, worn (0/1, 0.0/1.0 or
+// true/false).
+std::vector<GazeSample> parse_neon(const std::string& text, const std::string& name, const GazeImportOptions& o,
+                                   GazeNotes& notes) {
+  DelimitedTable t = parse_delimited(text, ',');
+  keep_recording(t, t.column("recording id"), o.recording, name, notes);
+  const int ct = require(t, "timestamp [ns]", name), cx = require(t, "gaze x [px]", name),
+            cy = require(t, "gaze y [px]", name);
+  const double sx = double(o.frame_width) / (o.source_width > 0 ? o.source_width : 1600);
+  const double sy = double(o.frame_height) / (o.source_height > 0 ? o.source_height : 1200);
+  return neon_rows(t, name, ct, cx, cy, t.column("worn"), sx, sy);
+}
+
 // Neon Marker Mapper (Pupil Cloud) gaze.csv: gaze position on surface x/y
 // [normalized], (0, 0) the surface's top left and (1, 1) its bottom right;
 // empty when the surface was not found (lost). The surface is the display
@@ -103,23 +111,7 @@ std::vector<GazeSample> parse_neon_surface(const std::string& text, const std::s
   keep_recording(t, t.column("recording id"), o.recording, name, notes);
   const int ct = require(t, "timestamp [ns]", name), cx = require(t, "gaze position on surface x [normalized]", name),
             cy = require(t, "gaze position on surface y [normalized]", name);
-  const int cb = t.column("blink id");
-  std::vector<GazeSample> out;
-  for (size_t r = 0; r < t.rows.size(); ++r) {
-    const std::vector<std::string>& row = t.rows[r];
-    const std::string where = name + ":" + std::to_string(t.line_numbers[r]);
-    GazeSample s;
-    double ns, x, y;
-    if (!parse_number(field(row, ct, where), ns)) throw InputError(where + ": timestamp [ns] is not a number");
-    s.t_s = ns * 1e-9;
-    const bool position = parse_number(field(row, cx, where), x) && parse_number(field(row, cy, where), y);
-    if (has(row, cb))
-      s.state = EyeState::kClosed;
-    else
-      place(s, position, x, y, o.frame_width, o.frame_height);
-    out.push_back(s);
-  }
-  return out;
+  return neon_rows(t, name, ct, cx, cy, -1, o.frame_width, o.frame_height);
 }
 
 size_t apply_blinks(const std::string& text, const std::string& name, const std::string& recording,

@@ -6,6 +6,8 @@
 // every format.
 #include <gtest/gtest.h>
 
+#include "tests/gaze_options.hpp"
+
 #include <fstream>
 
 #include "io/error.hpp"
@@ -15,12 +17,7 @@
 namespace eyestream::io {
 namespace {
 
-GazeImportOptions frame_1000x500() {
-  GazeImportOptions o;
-  o.frame_width = 1000;
-  o.frame_height = 500;
-  return o;
-}
+using test::frame_1000x500;
 
 bool mentions(const GazeRead& r, const std::string& text) {
   for (const std::string& n : r.notes)

@@ -4,17 +4,14 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/gaze_options.hpp"
+
 #include "io/error.hpp"
 
 namespace eyestream::io {
 namespace {
 
-GazeImportOptions frame_1000x500() {
-  GazeImportOptions o;
-  o.frame_width = 1000;
-  o.frame_height = 500;
-  return o;
-}
+using test::frame_1000x500;
 
 TEST(GazeImport, PupilCoreNormalisedBottomLeftWithConfidence) {
   const std::string text =

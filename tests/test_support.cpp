@@ -74,4 +74,15 @@ cv::Mat constant_frame(int width, int height, const cv::Vec3f& rgb) {
   return cv::Mat(height, width, CV_32FC3, cv::Scalar(rgb[0], rgb[1], rgb[2]));
 }
 
+std::vector<std::string> csv_fields(const std::string& row) {
+  std::vector<std::string> out;
+  size_t start = 0;
+  for (size_t comma = row.find(','); comma != std::string::npos; comma = row.find(',', start)) {
+    out.push_back(row.substr(start, comma - start));
+    start = comma + 1;
+  }
+  out.push_back(row.substr(start));
+  return out;
+}
+
 }  // namespace eyestream::test

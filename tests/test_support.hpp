@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <opencv2/core.hpp>
 #include <string>
+#include <vector>
 
 #include "pipeline/plan.hpp"
 
@@ -30,6 +31,9 @@ struct CommandResult {
 
 // Runs the eyestream binary with `args` (a shell-quoted string).
 CommandResult run_eyestream(const std::string& args);
+
+// The fields of one CSV row (no quoting; empty fields kept).
+std::vector<std::string> csv_fields(const std::string& row);
 
 // Reads a whole file as bytes.
 std::string read_bytes(const std::string& path);

@@ -102,13 +102,6 @@ TEST(TrueAngles, AnEquidistantReadingOfARectilinearFrameIsFarOff) {
   std::cout << "equidistant reading: " << seen / physical << " of the physical veil at 50 deg\n";
 }
 
-std::vector<std::string> split(const std::string& row) {
-  std::vector<std::string> out;
-  std::stringstream in(row);
-  for (std::string f; std::getline(in, f, ',');) out.push_back(f);
-  return out;
-}
-
 // Through the command line: the report's veil at a gaze 20 or 50 deg from
 // the light, at 960x540 and 480x270, 30 and 60 frames/s.
 TEST(TrueAngles, TheReportedVeilIsThePhysicalOneAtTwoSizesAndRates) {
@@ -132,11 +125,11 @@ TEST(TrueAngles, TheReportedVeilIsThePhysicalOneAtTwoSizesAndRates) {
     std::ifstream in(dir / "r.csv");
     std::string header, row;
     std::getline(in, header);
-    const std::vector<std::string> names = split(header);
+    const std::vector<std::string> names = test::csv_fields(header);
     const auto col = [&](const std::string& n) { return size_t(std::find(names.begin(), names.end(), n) - names.begin()); };
     int rows = 0;
     while (std::getline(in, row)) {
-      const std::vector<std::string> f = split(row);
+      const std::vector<std::string> f = test::csv_fields(row);
       const double adaptation = std::stod(f[col("adaptation_cd_m2")]), pupil = std::stod(f[col("pupil_mm")]);
       const Plan plan = test::plan_for(wide("exact", "rectilinear"), c.width, c.height, c.fps);
       const glare::EyeOptics optics = plan.eye_optics();

@@ -69,13 +69,6 @@ TEST(TrueAngles, AnAfterimageKeepsItsAngularSizeAcrossAWideFrame) {
   }
 }
 
-std::vector<std::string> split(const std::string& row) {
-  std::vector<std::string> out;
-  std::stringstream in(row);
-  for (std::string f; std::getline(in, f, ',');) out.push_back(f);
-  return out;
-}
-
 // Through the command line, 960x540 at 120 deg, glare off: the first
 // frame's adaptation is the mean over 1.5 x 1.5 deg of true angle around a
 // gaze 50 deg off axis (where a 1000 cd/m^2 stripe half the patch wide
@@ -120,7 +113,7 @@ TEST(TrueAngles, TheAdaptationPatchAndThePupilFieldAreTrueAngles) {
   std::string header, row;
   std::getline(in, header);
   std::getline(in, row);
-  const std::vector<std::string> names = split(header), f = split(row);
+  const std::vector<std::string> names = test::csv_fields(header), f = test::csv_fields(row);
   const auto col = [&](const std::string& n) { return size_t(std::find(names.begin(), names.end(), n) - names.begin()); };
   EXPECT_NEAR(std::stod(f[col("adaptation_cd_m2")]) / patch_mean, 1.0, 0.1)
       << "the patch's mean " << patch_mean << " cd/m^2 (1000 if the patch were 1.5 deg at the centre's scale)";
