@@ -82,8 +82,11 @@ std::vector<GazeSample> parse_eyelink(const std::string& text, const std::string
     // mean of the two (the one seen when the other is missing).
     double xl, yl, xr, yr;
     const bool left = w.size() >= 3 && parse_number(w[1], xl) && parse_number(w[2], yl);
-    const bool right = binocular && w.size() >= 6 && parse_number(w[4], xr) && parse_number(w[5], yr);
-    const bool use_left = left && (!binocular || o.eye != "right"), use_right = right && o.eye != "left";
+    // (An excerpt without START says nothing: a line of seven or more
+    // fields, "time xl yl pl xr yr pr ...", is binocular.)
+    const bool both = binocular || (!blocks && w.size() >= 7);
+    const bool right = both && w.size() >= 6 && parse_number(w[4], xr) && parse_number(w[5], yr);
+    const bool use_left = left && (!both || o.eye != "right"), use_right = right && o.eye != "left";
     if (use_left && use_right)
       x = 0.5 * (xl + xr), y = 0.5 * (yl + yr);
     else if (use_left)

@@ -47,8 +47,11 @@ void keep_recording(DelimitedTable& t, int column, const std::string& choice, co
     return;
   }
   std::vector<std::string> names;
-  for (const std::vector<std::string>& row : t.rows) {
-    const std::string id = column < int(row.size()) ? row[size_t(column)] : "";
+  for (size_t r = 0; r < t.rows.size(); ++r) {
+    const std::vector<std::string>& row = t.rows[r];
+    if (column >= int(row.size()) || row[size_t(column)].empty())
+      throw InputError(name + ":" + std::to_string(t.line_numbers[r]) + ": no " + t.header[size_t(column)]);
+    const std::string& id = row[size_t(column)];
     if (std::find(names.begin(), names.end(), id) == names.end()) names.push_back(id);
   }
   std::string list;
@@ -135,6 +138,7 @@ std::vector<GazeSample> read_gaze(const std::string& path, const GazeImportOptio
   if (o.blinks_text.empty() && std::filesystem::path(path).filename() != "blinks.csv") {
     const std::optional<std::string> b = read_text(blinks);
     if (b) {
+      protect_input(blinks.string());
       o.blinks_text = *b;
       o.blinks_name = blinks.string();
     }

@@ -151,7 +151,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.0, 100.0))
       ->capture_default_str();
   compare_cmd->add_option("--diff-out", cmp.diff_out, "CIEDE2000 heat maps: a PNG pattern (diff/%05d.png)");
-  compare_cmd->add_flag("-y,--overwrite", replace_files, "replace heat maps that exist");
+  compare_cmd->add_flag("-y,--overwrite", replace_files, "replace heat maps and the JSON report that exist");
   compare_cmd->add_option("--diff-scale", cmp.diff_scale, "CIEDE2000 at full scale in the heat maps")
       ->check(CLI::Range(0.01, 100.0))
       ->capture_default_str();
@@ -270,6 +270,7 @@ int main(int argc, char** argv) {
         require_extension(cmp.diff_out, {".png"}, "--diff-out");
         if (!replace_files) refuse_existing({{cmp.diff_out, "--diff-out"}});
       }
+      if (!cmp.json.empty() && !replace_files) refuse_existing({{cmp.json, "--json"}});
       const CompareResult r = compare(cmp);
       std::printf("%s", r.text.c_str());
       return r.exit_code;

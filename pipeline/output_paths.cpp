@@ -53,6 +53,7 @@ std::vector<OutputPath> run_outputs(const Settings& s) {
   }
   if (!s.checkpoint.empty() && (s.checkpoint_every > 0 || s.resume)) out.push_back({s.checkpoint, "--checkpoint"});
   if (!s.state_exr.empty()) out.push_back({s.state_exr, "--state-exr"});
+  if (!s.progress_file.empty()) out.push_back({s.progress_file, "--progress-file"});
   return out;
 }
 

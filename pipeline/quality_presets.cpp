@@ -11,6 +11,7 @@ void apply_quality_preset(const std::string& name, Settings& s) {
     s.substep_tolerance_deg = 0.0;
     s.psf_model = "vos";
     s.glare_engine = "exact";
+    s.glare_tail_factor = 4;  // unused by the exact engine; set so presets apply in any order alike
     s.glare_resolution = 1.0;
     s.acuity.pyramid_from_px = 0.0;
     s.sink.video.preset = "medium";

@@ -179,8 +179,12 @@ RunSummary run(const Settings& s) {
   }
   const TargetRegion target(s.target_rect, s.target_mask, cv::Size(info.width, info.height));
   check_outputs(run_outputs(s));  // before anything is written
-  if (!s.overwrite && !s.resume)
-    refuse_existing(run_outputs(s), s.start_frame, s.end_frame != 0 ? s.end_frame : info.frame_count);
+  if (!s.overwrite && !s.resume) {
+    const std::int64_t end = info.frame_count > 0 && (s.end_frame == 0 || s.end_frame > info.frame_count)
+                                 ? info.frame_count
+                                 : s.end_frame != 0 && info.frame_count > 0 ? s.end_frame : -1;
+    refuse_existing(run_outputs(s), s.start_frame, end);
+  }
   io::SinkOptions sink_options = s.sink;
   sink_options.video.frames_per_second = info.frames_per_second;
   std::unique_ptr<io::FrameSink> sink = io::make_sink(s.output, sink_options);

@@ -4,6 +4,9 @@
 #include <eyestream/eye.hpp>
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <fstream>
+
 #include "io/exr_file.hpp"
 #include "io/exr_sequence_source.hpp"
 #include "io/gaze_import.hpp"
@@ -30,11 +33,29 @@ Clip load_clip(const test::ScratchDir& dir) {
     const double t0 = f->index / c.fps, t1 = (f->index + 1) / c.fps;
     std::vector<Gaze> in;
     for (const io::GazeSample& s : samples)
-      if (s.t_s >= t0 && s.t_s < t1) in.push_back({s.t_s, s.x, s.y, s.state == io::EyeState::kClosed});
+      if (s.t_s >= t0 && s.t_s < t1)
+        in.push_back({s.t_s, s.x, s.y, s.state == io::EyeState::kClosed, s.state == io::EyeState::kLost});
     c.frames.push_back(f->rgb.clone());
     c.gaze.push_back(in);
   }
   return c;
+}
+
+// A gaze log moving every 10 ms, with a blink across the end of frame 2
+// and lost samples across the end of frame 5 (30 frames/s).
+void write_gaze_with_blink_and_loss(const std::string& path) {
+  std::string csv = "t,x,y,event\n";
+  for (int i = 0; i < 40; ++i) {
+    const double t = 0.01 * i;
+    char line[96];
+    const char* event = (t >= 0.085 && t < 0.145) ? "blink" : (t >= 0.185 && t < 0.235) ? "lost" : "";
+    if (*event)
+      std::snprintf(line, sizeof line, "%.3f,,,%s\n", t, event);
+    else
+      std::snprintf(line, sizeof line, "%.3f,%.1f,%.1f,\n", t, 10.0 + 1.3 * i, 8.0 + 0.5 * i);
+    csv += line;
+  }
+  std::ofstream(path) << csv;
 }
 
 TEST(LibraryApi, AnEyeComputesWhatTheCommandLineComputes) {
@@ -42,6 +63,7 @@ TEST(LibraryApi, AnEyeComputesWhatTheCommandLineComputes) {
   ASSERT_EQ(test::run_eyestream("sample headlights -o " + (dir / "h") + " --width 64 --height 36 --duration 0.4")
                 .exit_code,
             0);
+  write_gaze_with_blink_and_loss(dir / "h/gaze.csv");
   const auto r = test::run_eyestream("run -i " + (dir / "h/frames") + " -g " + (dir / "h/gaze.csv") + " -o " +
                                      (dir / "e/%05d.exr") + " --quality fast --viewer-age 70");
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -85,16 +107,24 @@ TEST(LibraryApi, StateRestoresAndPointersWork) {
                 .exit_code,
             0);
   const Clip clip = load_clip(dir);
+  // The state is a snapshot: taken after frame 3, restored after the
+  // saving eye has gone on, it still continues from frame 4.
   Eye a(64, 36, clip.fps), b(64, 36, clip.fps);
   for (size_t i = 0; i < 4; ++i) a.process(clip.frames[i], clip.gaze[i]);
-  b.restore(a.state());
+  const Eye::State saved = a.state();
+  std::vector<Frame> later;
+  for (size_t i = 4; i < clip.frames.size(); ++i) later.push_back(a.process(clip.frames[i], clip.gaze[i]));
+  b.restore(saved);
   for (size_t i = 4; i < clip.frames.size(); ++i) {
-    const Frame fa = a.process(clip.frames[i], clip.gaze[i]);
     const cv::Mat& m = clip.frames[i];
     const Frame fb = b.process(m.ptr<float>(), m.step, clip.gaze[i]);
-    ASSERT_EQ(cv::norm(fa.linear, fb.linear, cv::NORM_INF), 0.0) << "frame " << i;
-    ASSERT_EQ(cv::norm(fa.code, fb.code, cv::NORM_INF), 0.0) << "frame " << i;
+    ASSERT_EQ(cv::norm(later[i - 4].linear, fb.linear, cv::NORM_INF), 0.0) << "frame " << i;
+    ASSERT_EQ(cv::norm(later[i - 4].code, fb.code, cv::NORM_INF), 0.0) << "frame " << i;
   }
+  EXPECT_THROW(b.process(nullptr, 0), Error);
+  Eye::State bad = saved;
+  bad.numbers[0] = NAN;
+  EXPECT_THROW(b.restore(bad), Error);
 }
 
 }  // namespace

@@ -29,6 +29,8 @@ auto translated(F&& f) -> decltype(f()) {
     throw Error(e.what(), 3);
   } catch (const OutputError& e) {
     throw Error(e.what(), 4);
+  } catch (const cv::Exception& e) {
+    throw Error(e.what(), 2);
   }
 }
 
@@ -56,8 +58,9 @@ struct Eye::Impl {
   pipeline::EyeSimulator eye;
   int bits = 8;  // of the encoded frame
   std::int64_t index = 0;
-  // The gaze carried from earlier frames: the last sample, and the last
-  // with a position (a lost sample holds it).
+  // The gaze carried from earlier frames: the last sample with a position,
+  // then the last sample when it is a blink or lost (which hold that
+  // position), as the command line's timeline of the whole log has them.
   std::vector<io::GazeSample> carried;
 
   Impl(pipeline::Plan p) : plan(p), eye(std::move(p)) {}
@@ -67,12 +70,19 @@ struct Eye::Impl {
     for (const Gaze& g : gaze) {
       if (!std::isfinite(g.t_s) || !std::isfinite(g.x) || !std::isfinite(g.y))
         throw UsageError("a gaze sample of frame " + std::to_string(index) + " is not finite");
-      samples.push_back({g.t_s, g.x, g.y, g.closed ? io::EyeState::kClosed : io::EyeState::kOpen});
+      samples.push_back({g.t_s, g.x, g.y,
+                         g.closed ? io::EyeState::kClosed : g.lost ? io::EyeState::kLost : io::EyeState::kOpen});
     }
     std::stable_sort(samples.begin(), samples.end(),
                      [](const io::GazeSample& a, const io::GazeSample& b) { return a.t_s < b.t_s; });
     const pipeline::GazeTimeline timeline(samples, plan.width / 2.0, plan.height / 2.0);
-    if (!samples.empty()) carried = {samples.back()};
+    if (!samples.empty()) {
+      const auto known = std::find_if(samples.rbegin(), samples.rend(),
+                                      [](const io::GazeSample& g) { return g.state == io::EyeState::kOpen; });
+      carried.clear();
+      if (known != samples.rend()) carried.push_back(*known);
+      if (samples.back().state != io::EyeState::kOpen) carried.push_back(samples.back());
+    }
     return timeline.segments(t0, t1);
   }
 };
@@ -122,6 +132,10 @@ Frame Eye::process(const cv::Mat& rgb, const std::vector<Gaze>& gaze) {
 }
 
 Frame Eye::process(const float* rgb, std::size_t stride_bytes, const std::vector<Gaze>& gaze) {
+  if (!rgb || stride_bytes < std::size_t(width()) * 3 * sizeof(float))
+    throw Error("frame " + std::to_string(impl_->index) + ": a null pointer or a row stride under " +
+                    std::to_string(width() * 3 * sizeof(float)) + " bytes",
+                2);
   const cv::Mat view(height(), width(), CV_32FC3, const_cast<float*>(rgb), stride_bytes);
   return process(view, gaze);
 }
@@ -129,7 +143,7 @@ Frame Eye::process(const float* rgb, std::size_t stride_bytes, const std::vector
 Eye::State Eye::state() const {
   const pipeline::EyeMemory m = impl_->eye.save();
   State s;
-  s.mats = m.retina;
+  for (const cv::Mat& mat : m.retina) s.mats.push_back(mat.clone());  // a snapshot: the eye steps its own in place
   s.numbers = {double(impl_->index), m.adaptation_log.value_or(NAN), m.pupil_mm.value_or(NAN),
                m.retina_started ? 1.0 : 0.0};
   for (const io::GazeSample& g : impl_->carried)
@@ -139,8 +153,12 @@ Eye::State Eye::state() const {
 
 void Eye::restore(const State& s) {
   translated([&] {
-    if (s.numbers.size() < 4 || (s.numbers.size() - 4) % 4 != 0)
-      throw UsageError("the eye's state is malformed");
+    const auto whole = [](double v, double most) { return std::isfinite(v) && v >= 0 && v <= most && v == std::floor(v); };
+    bool ok = s.numbers.size() >= 4 && (s.numbers.size() - 4) % 4 == 0 && whole(s.numbers[0], 1e15);
+    for (size_t i = 4; ok && i + 3 < s.numbers.size(); i += 4)
+      ok = std::isfinite(s.numbers[i]) && std::isfinite(s.numbers[i + 1]) && std::isfinite(s.numbers[i + 2]) &&
+           whole(s.numbers[i + 3], 2);
+    if (!ok) throw UsageError("the eye's state is malformed");
     pipeline::EyeMemory m;
     m.retina = s.mats;
     if (std::isfinite(s.numbers[1])) m.adaptation_log = s.numbers[1];

@@ -32,10 +32,12 @@ class Error : public std::runtime_error {
 };
 
 // A gaze sample: seconds from the first frame, frame pixels (origin at the
-// top-left corner), and whether the eye is closed (a blink).
+// top-left corner), whether the eye is closed (a blink: darkness, the last
+// position held) or the tracker lost it (the last position held, open).
 struct Gaze {
   double t_s = 0.0, x = 0.0, y = 0.0;
   bool closed = false;
+  bool lost = false;
 };
 
 // What happened to one frame.
@@ -65,13 +67,16 @@ class Eye {
 
   // The next frame: linear Rec.709 RGB in cd/m^2 (CV_32FC3, width x
   // height) and the gaze samples inside its interval [n / fps, (n + 1) /
-  // fps). Without samples the last gaze holds, as on the command line.
+  // fps). Without samples the last gaze holds, as on the command line;
+  // before the first sample the gaze is at the frame's centre (the command
+  // line, reading the whole log, holds the first sample back to frame 0).
   Frame process(const cv::Mat& rgb_cd_m2, const std::vector<Gaze>& gaze = {});
   // The same for a plain pointer: height rows of width x 3 floats, rows
   // `stride_bytes` apart (not copied).
   Frame process(const float* rgb_cd_m2, std::size_t stride_bytes, const std::vector<Gaze>& gaze = {});
 
-  // The eye's state between frames (the checkpoint's contents), to resume.
+  // The eye's state between frames (the checkpoint's contents, a copy), to
+  // resume.
   struct State {
     std::vector<cv::Mat> mats;
     std::vector<double> numbers;
