@@ -29,9 +29,14 @@ std::optional<SceneFrame> RawStreamSource::next() {
   const size_t want = rgb.total() * rgb.elemSize();
   const size_t got = std::fread(rgb.data, 1, want, stream_);
   if (got == 0 && std::feof(stream_)) return std::nullopt;
-  if (got != want)
-    throw InputError(name_ + ": frame " + std::to_string(index_) + " is truncated (" + std::to_string(got) + " of " +
-                     std::to_string(want) + " bytes)");
+  if (got != want) {
+    const std::string message = name_ + ": frame " + std::to_string(index_) + " is truncated (" +
+                                std::to_string(got) + " of " + std::to_string(want) + " bytes)";
+    if (!options_.stop_on_truncated) throw InputError(message);
+    std::fprintf(stderr, "eyestream: warning: %s; stopping after %lld frames (--on-bad-video stop)\n",
+                 message.c_str(), (long long)index_);
+    return std::nullopt;
+  }
   if (options_.scale != 1.0) rgb *= options_.scale;
   SceneFrame f;
   f.rgb = rgb;

@@ -13,6 +13,7 @@ struct RawStreamOptions {
   int width = 0, height = 0;      // --size WxH (required)
   double frames_per_second = 30;  // --fps
   double scale = 1.0;             // cd/m^2 per unit (--scale)
+  bool stop_on_truncated = false; // --on-bad-video stop: a stream ending inside a frame ends before it
 };
 
 // Each frame is width * height * 3 native-endian 32-bit floats, R, G, B

@@ -20,6 +20,7 @@ std::unique_ptr<FrameSource> open_source(const std::string& input, const SourceO
                        " pixels (--max-pixels)");
     raw.frames_per_second = o.exr.frames_per_second.value_or(o.exr.default_frames_per_second);
     raw.scale = o.exr.scale.value_or(1.0);
+    raw.stop_on_truncated = o.video.on_bad_video == "stop";
     return std::make_unique<RawStreamSource>(stdin, "standard input", raw);
   }
   if (is_float_image_input(input)) return std::make_unique<FloatImageSource>(input, o.exr);

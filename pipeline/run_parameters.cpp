@@ -19,8 +19,9 @@ ParamSet run_parameters(Settings& s) {
   Param max_pixels = number("max-pixels", "pixels", "refuse larger frames, before allocating", in, &s.exr.max_pixels, 1, 4e9);
   max_pixels.shown_default = "the machine's memory over 400 bytes a pixel";
   set.add(max_pixels);
-  set.add(choice("on-bad-video", "a video packet that does not decode, or a video that ends early: fail, or stop "
-                 "there keeping what was read", in, &s.video_input.on_bad_video, {"fail", "stop"}));
+  set.add(choice("on-bad-video", "a video packet that does not decode, a video that ends early, or raw input ending "
+                 "inside a frame: fail, or stop there keeping what was read", in, &s.video_input.on_bad_video,
+                 {"fail", "stop"}));
   set.add(text("size", "WxH of raw float RGB frames on standard input (-i -)", in, &s.frame_size));
   set.add(choice("video-transfer", "transfer of a video input: auto (its PQ or HLG tag), pq, hlg, or sdr (BT.1886)",
                  in, &s.video_input.transfer, {"auto", "pq", "hlg", "sdr"}));

@@ -65,6 +65,13 @@ TEST(StreamInput, ATruncatedFrameOrAMissingSizeIsRefused) {
   EXPECT_EQ(r.exit_code, 3) << r.output;
   EXPECT_NE(r.output.find("frame 1 is truncated (100 of 18432 bytes)"), std::string::npos) << r.output;
   EXPECT_FALSE(std::filesystem::exists(dir / "out.mp4"));
+  // --on-bad-video stop keeps the frames before the cut, as for videos.
+  r = test::run_eyestream("run -i - --size 48x32 -o " + (dir / "kept/%05d.png") + " --on-bad-video stop < " +
+                          (dir / "short.raw"));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("stopping after 1 frames (--on-bad-video stop)"), std::string::npos) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(dir / "kept/00000.png"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "kept/00001.png"));
   r = test::run_eyestream("run -i - -o " + (dir / "out.mp4") + " < " + (dir / "short.raw"));
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("--size"), std::string::npos) << r.output;
