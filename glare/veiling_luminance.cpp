@@ -4,6 +4,37 @@
 
 namespace eyestream::glare {
 
+double veiling_luminance_between(const cv::Mat& luminance, const ComponentKernels& k, const PsfWeights& w, double x,
+                                 double y, double exclusion_px) {
+  CV_Assert(luminance.type() == CV_32F);
+  const cv::Point c = k.centre();
+  const cv::Mat* components[6] = {&k.core, &k.inner, &k.outer, &k.halo[0], &k.halo[1], &k.halo[2]};
+  const double weights[6] = {w.core, w.inner, w.outer, 0.2126 * w.halo, 0.7152 * w.halo, 0.0722 * w.halo};
+  // The four pixel centres around (x, y) and their bilinear weights; one
+  // sweep over the sources for all four.
+  const double u = x - 0.5, v = y - 0.5;
+  const int px = int(std::floor(u)), py = int(std::floor(v));
+  const double fu = u - px, fv = v - py;
+  const double corner[4] = {(1 - fu) * (1 - fv), fu * (1 - fv), (1 - fu) * fv, fu * fv};
+  double veil[4] = {0, 0, 0, 0};
+  for (int r = 0; r < luminance.rows; ++r) {
+    const float* l = luminance.ptr<float>(r);
+    for (int q = 0; q < luminance.cols; ++q) {
+      if (!(l[q] > 0.0f)) continue;
+      for (int i = 0; i < 4; ++i) {
+        const int ax = px + (i & 1), ay = py + (i >> 1);
+        if (std::hypot(q - ax, r - ay) <= exclusion_px) continue;
+        const int kx = c.x + ax - q, ky = c.y + ay - r;
+        if (kx < 0 || ky < 0 || kx >= k.core.cols || ky >= k.core.rows) continue;
+        double kernel = 0.0;
+        for (int j = 0; j < 6; ++j) kernel += weights[j] * components[j]->at<double>(ky, kx);
+        veil[i] += double(l[q]) * kernel;
+      }
+    }
+  }
+  return corner[0] * veil[0] + corner[1] * veil[1] + corner[2] * veil[2] + corner[3] * veil[3];
+}
+
 double veiling_luminance(const cv::Mat& luminance, const ComponentKernels& k, const PsfWeights& w, double x, double y,
                          double exclusion_px) {
   CV_Assert(luminance.type() == CV_32F);

@@ -18,6 +18,11 @@ namespace eyestream::glare {
 double veiling_luminance(const cv::Mat& luminance, const ComponentKernels& k, const PsfWeights& w, double x, double y,
                          double exclusion_px);
 
+// The same between pixel centres: the veils at the four pixel centres
+// around (x, y), interpolated bilinearly, in one sweep over the sources.
+double veiling_luminance_between(const cv::Mat& luminance, const ComponentKernels& k, const PsfWeights& w, double x,
+                                 double y, double exclusion_px);
+
 // Threshold increment TI = 65 L_v / L_av^0.8 (%), L_av the adaptation
 // luminance (road-lighting practice; valid for L_av from about 0.05 to
 // 5 cd/m^2, see threshold_increment_valid).

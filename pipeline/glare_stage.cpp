@@ -78,15 +78,8 @@ std::optional<double> GlareStage::veil_at(const cv::Mat& luminance, double adapt
   if (p.identity()) return glare::veiling_luminance(luminance, kernels_, w, x, y, exclusion_px);
   // On the angle plane (each pixel's luminance times its solid angle),
   // between the four plane pixels around the point, as the picture is.
-  const cv::Mat flux = p.to_plane_flux(luminance);
-  const cv::Point2d at = p.to_plane({x, y}) - cv::Point2d(0.5, 0.5);
-  const double u0 = std::floor(at.x), v0 = std::floor(at.y), fu = at.x - u0, fv = at.y - v0;
-  double veil = 0.0;
-  for (int dv = 0; dv < 2; ++dv)
-    for (int du = 0; du < 2; ++du)
-      veil += (du ? fu : 1 - fu) * (dv ? fv : 1 - fv) *
-              glare::veiling_luminance(flux, kernels_, w, u0 + du + 0.5, v0 + dv + 0.5, exclusion_px);
-  return veil;
+  const cv::Point2d at = p.to_plane({x, y});
+  return glare::veiling_luminance_between(p.to_plane_flux(luminance), kernels_, w, at.x, at.y, exclusion_px);
 }
 
 cv::Vec3f GlareStage::kept_share(const glare::PsfWeights& w) const {
