@@ -18,17 +18,24 @@ MesopicStage::MesopicStage(const Plan& plan) : plan_(plan) {
 
 cv::Mat MesopicStage::acuity_level(const cv::Mat& rgb, double adaptation_log, double time_s, double gaze_x,
                                    double gaze_y) const {
-  // log10 of the local luminance, low-passed at the coarsest band.
-  cv::Mat luminance = retina::floored_luminance(rgb, plan_.dark_cd_m2);
-  const double sigma = acuity_->sigmas_px().back();
-  retina::acuity_blur(luminance, luminance, sigma, plan_.mesopic.acuity_params.pyramid_from_px);
+  // log10 of the local luminance, low-passed at the coarsest band, held
+  // reduced by the level map's factor (1 at reference).
+  const int f = acuity_->level_factor(rgb.size());
+  const cv::Mat luminance =
+      retina::acuity_lowpass(retina::floored_luminance(rgb, plan_.dark_cd_m2), acuity_->sigmas_px().back(), f);
   const retina::MesopicParams& m = plan_.mesopic.colour;
   const float floor_rho = float(retina::mesopic_rho(adaptation_log, m));
-  cv::Mat rho(rgb.size(), CV_32F);
-  luminance.forEach<float>([&](const float& l, const int* pos) {
-    rho.at<float>(pos[0], pos[1]) = std::max(float(retina::mesopic_rho(std::log10(l), m)), floor_rho);
+  cv::Mat rho(luminance.size(), CV_32F);
+  cv::parallel_for_(cv::Range(0, rho.rows), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      const float* l = luminance.ptr<float>(y);
+      float* r = rho.ptr<float>(y);
+      for (int x = 0; x < rho.cols; ++x) r[x] = std::max(float(retina::mesopic_rho(std::log10(l[x]), m)), floor_rho);
+    }
   });
-  return acuity_->level(rho, time_s, gaze_x, gaze_y);
+  cv::Mat level = acuity_->level(rho, time_s, gaze_x, gaze_y, f);
+  if (f > 1) cv::resize(level, level, rgb.size(), 0, 0, cv::INTER_LINEAR);
+  return level;
 }
 
 void MesopicStage::render(const cv::Mat& rgb, const retina::ToneCurve& curve, double adaptation_log, double time_s,

@@ -1,9 +1,11 @@
 #include "retina/acuity_loss.hpp"
 
 #include "retina/acuity_curve.hpp"
+#include "retina/gaussian_blur.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <opencv2/imgproc.hpp>
 
 namespace eyestream::retina {
@@ -49,8 +51,21 @@ double AcuityLoss::rho_all_kept() const {
   return hi;
 }
 
-cv::Mat AcuityLoss::level(const cv::Mat& rho, double t_s, double gaze_x, double gaze_y) const {
-  cv::Mat x = smooth_noise(rho.size(), t_s, noise_, seed_, RandomStream::kAcuity, {gaze_x, gaze_y});
+int AcuityLoss::level_factor(cv::Size frame) const {
+  const double sigma = sigmas_px_.back();
+  int f = 1;
+  while (params_.pyramid_from_px > 0 && sigma >= params_.pyramid_from_px && sigma / (2 * f) >= 3.0 &&
+         frame.width / (2 * f) >= 8 && frame.height / (2 * f) >= 8)
+    f *= 2;
+  return f;
+}
+
+cv::Mat AcuityLoss::level(const cv::Mat& rho, double t_s, double gaze_x, double gaze_y, int factor) const {
+  // The reduced map's pixel centres are the frame's at (X + 0.5) factor:
+  // the noise's cell and origin scale with it.
+  SmoothNoiseParams noise = noise_;
+  noise.cell_px /= factor;
+  cv::Mat x = smooth_noise(rho.size(), t_s, noise, seed_, RandomStream::kAcuity, {gaze_x / factor, gaze_y / factor});
   // Jacobs et al. 2015 eq. 15: rho + g X, the noise fading out above rho = 1.
   cv::Mat level(rho.size(), CV_32F);
   const float g = float(params_.noise_gain);
@@ -63,41 +78,38 @@ cv::Mat AcuityLoss::level(const cv::Mat& rho, double t_s, double gaze_x, double 
   return level;
 }
 
-void acuity_blur(const cv::Mat& src, cv::Mat& dst, double sigma, double pyramid_from_px) {
-  int f = 1;
-  while (pyramid_from_px > 0 && sigma >= pyramid_from_px && sigma / (2 * f) >= 3.0 && src.cols / (2 * f) >= 8 &&
-         src.rows / (2 * f) >= 8)
-    f *= 2;
+cv::Mat acuity_lowpass(const cv::Mat& src, double sigma, int f) {
+  cv::Mat out;
   if (f == 1) {
-    cv::GaussianBlur(src, dst, cv::Size(0, 0), sigma, sigma, cv::BORDER_REPLICATE);
-    return;
+    gaussian_blur(src, out, sigma);
+    return out;
   }
-  cv::Mat small;
-  cv::resize(src, small, cv::Size((src.cols + f - 1) / f, (src.rows + f - 1) / f), 0, 0, cv::INTER_AREA);
+  cv::resize(src, out, cv::Size((src.cols + f - 1) / f, (src.rows + f - 1) / f), 0, 0, cv::INTER_AREA);
   // The box reduction and the bilinear enlargement blur by about f^2/12 and
   // f^2/6 px^2 of variance themselves: the reduced blur supplies the rest.
   const double s = std::sqrt(std::max(sigma * sigma - f * f / 4.0, 1.0)) / f;
-  cv::GaussianBlur(small, small, cv::Size(0, 0), s, s, cv::BORDER_REPLICATE);
-  cv::resize(small, dst, src.size(), 0, 0, cv::INTER_LINEAR);
+  gaussian_blur(out, out, s);
+  return out;
 }
 
 namespace {
 
-// The value of `m` (CV_32FC3, the image reduced by f) at full-resolution
-// pixel (x, y): bilinear, pixel centres at (x + 0.5) / f - 0.5, borders
-// replicated (as cv::resize INTER_LINEAR).
-cv::Vec3f sample(const cv::Mat& m, int f, int x, int y) {
-  if (f == 1) return m.ptr<cv::Vec3f>(y)[x];
-  const float inv = 1.0f / float(f);
-  const float gx = std::clamp((float(x) + 0.5f) * inv - 0.5f, 0.0f, float(m.cols - 1));
-  const float gy = std::clamp((float(y) + 0.5f) * inv - 0.5f, 0.0f, float(m.rows - 1));
-  const int x0 = int(gx), y0 = int(gy);
-  const int x1 = std::min(x0 + 1, m.cols - 1), y1 = std::min(y0 + 1, m.rows - 1);
-  const float fx = gx - float(x0), fy = gy - float(y0);
-  const cv::Vec3f* r0 = m.ptr<cv::Vec3f>(y0);
-  const cv::Vec3f* r1 = m.ptr<cv::Vec3f>(y1);
-  return (r0[x0] * (1.0f - fx) + r0[x1] * fx) * (1.0f - fy) + (r1[x0] * (1.0f - fx) + r1[x1] * fx) * fy;
-}
+// Where full-resolution pixel i reads a map reduced by f, bilinearly:
+// centres at (i + 0.5) / f - 0.5, borders replicated (as cv::resize
+// INTER_LINEAR).
+struct BilinearAxis {
+  std::vector<int> lo, hi;
+  std::vector<float> w;  // weight of hi
+  BilinearAxis(int n, int f, int reduced) : lo(size_t(n)), hi(size_t(n)), w(size_t(n)) {
+    const float inv = 1.0f / float(f);
+    for (int i = 0; i < n; ++i) {
+      const float g = std::clamp((float(i) + 0.5f) * inv - 0.5f, 0.0f, float(reduced - 1));
+      lo[size_t(i)] = int(g);
+      hi[size_t(i)] = std::min(lo[size_t(i)] + 1, reduced - 1);
+      w[size_t(i)] = g - float(lo[size_t(i)]);
+    }
+  }
+};
 
 }  // namespace
 
@@ -114,41 +126,82 @@ void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
   // halving) and the bilinear read (f^2 / 6) add, so every level's variance
   // stays sigma_i^2.
   const int n = params_.bands;
-  std::vector<cv::Mat> levels(size_t(n) + 1);
-  std::vector<int> factor(size_t(n) + 1, 1);
+  std::vector<float> tau(tau_.begin(), tau_.end());
+  // The first kept band of each pixel (n: none kept), and the coarsest any
+  // pixel takes: levels beyond it are not made.
+  cv::Mat first(image.size(), CV_8U);
+  std::vector<std::uint8_t> row_deepest(size_t(image.rows), 0);
+  cv::parallel_for_(cv::Range(0, image.rows), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      const float* lv = level.ptr<float>(y);
+      std::uint8_t* k_row = first.ptr<std::uint8_t>(y);
+      std::uint8_t deepest = 0;
+      for (int x = 0; x < image.cols; ++x) {
+        int k = 0;
+        while (k < n && !(lv[x] > tau[size_t(k)])) ++k;
+        k_row[x] = std::uint8_t(k);
+        deepest = std::max(deepest, k_row[x]);
+      }
+      row_deepest[size_t(y)] = deepest;
+    }
+  });
+  const int deepest = *std::max_element(row_deepest.begin(), row_deepest.end());
+  if (deepest == 0) return;
+  std::vector<cv::Mat> levels(size_t(deepest) + 1);
+  std::vector<int> factor(size_t(deepest) + 1, 1);
   levels[0] = image;
   double variance = 0.0;  // of the stored levels[i], full-resolution px^2
-  for (int i = 1; i <= n; ++i) {
+  for (int i = 1; i <= deepest; ++i) {
     const double sigma = sigmas_px_[size_t(i - 1)];
     int f = factor[size_t(i - 1)];
-    const cv::Mat* from = &levels[size_t(i - 1)];
-    cv::Mat reduced;
-    if (params_.pyramid_from_px > 0 && sigma / (2 * f) >= params_.pyramid_from_px / 2 && from->cols >= 16 &&
-        from->rows >= 16) {
-      cv::resize(*from, reduced, cv::Size((from->cols + 1) / 2, (from->rows + 1) / 2), 0, 0, cv::INTER_AREA);
+    cv::Mat from = levels[size_t(i - 1)];
+    if (params_.pyramid_from_px > 0 && sigma / (2 * f) >= params_.pyramid_from_px / 2 && from.cols >= 16 &&
+        from.rows >= 16) {
+      cv::Mat reduced;
+      cv::resize(from, reduced, cv::Size((from.cols + 1) / 2, (from.rows + 1) / 2), 0, 0, cv::INTER_AREA);
       variance += f * f / 4.0;
       f *= 2;
-      from = &reduced;
+      from = reduced;
     }
     factor[size_t(i)] = f;
     const double target = sigma * sigma - (f > 1 ? f * f / 6.0 : 0.0);
     const double extra = std::sqrt(std::max(target - variance, 0.0)) / f;  // at the level's own resolution
-    if (extra < 0.05) {
-      levels[size_t(i)] = from == &reduced ? reduced : from->clone();
+    // A blur under 0.19 px gives its neighbours a weight under 1e-6
+    // (exp(-1 / (2 0.19^2))): a copy, its variance left to the next level.
+    if (extra < 0.19) {
+      levels[size_t(i)] = from;  // read only: the image is written after every level is made
     } else {
-      cv::GaussianBlur(*from, levels[size_t(i)], cv::Size(0, 0), extra, extra, cv::BORDER_REPLICATE);
+      gaussian_blur(from, levels[size_t(i)], extra);
       variance = std::max(variance, target);
     }
   }
-  std::vector<float> tau(tau_.begin(), tau_.end());
+  // Each reduced level's bilinear read, per column and per row.
+  std::vector<std::unique_ptr<BilinearAxis>> across(size_t(deepest) + 1), down(size_t(deepest) + 1);
+  for (int i = 1; i <= deepest; ++i)
+    if (factor[size_t(i)] > 1) {
+      across[size_t(i)] = std::make_unique<BilinearAxis>(image.cols, factor[size_t(i)], levels[size_t(i)].cols);
+      down[size_t(i)] = std::make_unique<BilinearAxis>(image.rows, factor[size_t(i)], levels[size_t(i)].rows);
+    }
   cv::parallel_for_(cv::Range(0, image.rows), [&](const cv::Range& rows) {
     for (int y = rows.start; y < rows.end; ++y) {
-      const float* lv = level.ptr<float>(y);
+      const std::uint8_t* k_row = first.ptr<std::uint8_t>(y);
       cv::Vec3f* out = image.ptr<cv::Vec3f>(y);
       for (int x = 0; x < image.cols; ++x) {
-        int k = 0;  // the first kept band (n: none kept)
-        while (k < n && !(lv[x] > tau[size_t(k)])) ++k;
-        if (k > 0) out[x] = sample(levels[size_t(k)], factor[size_t(k)], x, y);
+        const int k = std::min<int>(k_row[x], deepest);
+        if (k == 0) continue;
+        const cv::Mat& m = levels[size_t(k)];
+        if (factor[size_t(k)] == 1) {
+          out[x] = m.ptr<cv::Vec3f>(y)[x];
+          continue;
+        }
+        const BilinearAxis& ax = *across[size_t(k)];
+        const BilinearAxis& ay = *down[size_t(k)];
+        const size_t iy = size_t(y), ix = size_t(x);
+        const cv::Vec3f* r0 = m.ptr<cv::Vec3f>(ay.lo[iy]);
+        const cv::Vec3f* r1 = m.ptr<cv::Vec3f>(ay.hi[iy]);
+        const float fx = ax.w[ix], fy = ay.w[iy];
+        const int x0 = ax.lo[ix], x1 = ax.hi[ix];
+        out[x] = (r0[x0] * (1.0f - fx) + r0[x1] * fx) * (1.0f - fy) + (r1[x0] * (1.0f - fx) + r1[x1] * fx) * fy;
       }
     }
   });

@@ -51,9 +51,10 @@ struct AcuityParams {
 // across the first photopic decade (rho 1 to 1.5: cone vision's acuity is
 // not patchy), so with X clipped to +-2 every band is kept from rho 1.44
 // (7.5 cd/m^2) up: photopic scenes are untouched exactly.
-// Gaussian blur of `src` by sigma px (replicated border); a blur of at
-// least pyramid_from_px (> 0) runs on a copy reduced by a power of two.
-void acuity_blur(const cv::Mat& src, cv::Mat& dst, double sigma, double pyramid_from_px);
+// Gaussian blur of `src` by sigma px (replicated border), held reduced by
+// `factor` (a power of two: area reduction, then the rest of the blur, so
+// that with a bilinear enlargement the variance is sigma^2).
+cv::Mat acuity_lowpass(const cv::Mat& src, double sigma, int factor);
 
 class AcuityLoss {
  public:
@@ -70,12 +71,23 @@ class AcuityLoss {
   // The thresholds tau_i, finest band first.
   const std::vector<double>& thresholds() const { return tau_; }
 
-  // rho + g X at each pixel (CV_32F) for a rho map (CV_32F) at time t_s,
-  // with the gaze at (gaze_x, gaze_y): X lives on the retina, so its
-  // pattern moves with the gaze (acuity is a property of the eye).
-  cv::Mat level(const cv::Mat& rho, double t_s, double gaze_x = 0.0, double gaze_y = 0.0) const;
+  // The factor (a power of two) by which the level map of a frame is held
+  // reduced: 1 at reference (pyramid_from_px 0), else the largest that
+  // leaves the coarsest band 3 reduced pixels wide. The map is smooth at
+  // that scale (the local luminance is low-passed there, the noise is
+  // coarser still) and is read bilinearly.
+  int level_factor(cv::Size frame) const;
 
-  // Applies the loss to `image` (CV_32FC3) in place for a level map from level().
+  // rho + g X at each pixel (CV_32F) for a rho map (CV_32F) at time t_s,
+  // with the gaze at (gaze_x, gaze_y) frame pixels: X lives on the retina,
+  // so its pattern moves with the gaze (acuity is a property of the eye).
+  // With factor > 1 the rho map is the frame reduced by it (pixel X of the
+  // map is centred on frame position (X + 0.5) factor).
+  cv::Mat level(const cv::Mat& rho, double t_s, double gaze_x = 0.0, double gaze_y = 0.0, int factor = 1) const;
+
+  // Applies the loss to `image` (CV_32FC3) in place for a level map from
+  // level() at the image's size. Only the blur levels some pixel takes are
+  // made.
   void apply(cv::Mat& image, const cv::Mat& level) const;
 
  private:

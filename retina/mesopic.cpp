@@ -4,6 +4,7 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
+#include "retina/gaussian_blur.hpp"
 #include "retina/luminance.hpp"
 
 namespace eyestream::retina {
@@ -28,7 +29,7 @@ bool mesopic_colour(double adaptation_log, const MesopicParams& p, MesopicColour
 void local_rho(const cv::Mat& rgb, double adaptation_log, double sigma_px, double floor_cd_m2, const MesopicParams& p,
                cv::Mat& rho) {
   cv::Mat l = floored_luminance(rgb, floor_cd_m2);
-  if (sigma_px > 0.0) cv::GaussianBlur(l, l, cv::Size(0, 0), sigma_px, sigma_px, cv::BORDER_REPLICATE);
+  if (sigma_px > 0.0) gaussian_blur(l, l, sigma_px);
   rho.create(rgb.size(), CV_32F);
   const float a = float(adaptation_log), bottom = float(p.bottom_log), span = float(p.top_log - p.bottom_log);
   const float margin = float(p.local_margin_log);

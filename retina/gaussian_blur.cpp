@@ -1,0 +1,95 @@
+#include "retina/gaussian_blur.hpp"
+
+#include <algorithm>
+#include <opencv2/imgproc.hpp>
+#include <vector>
+
+namespace eyestream::retina {
+
+namespace {
+
+// The sweeps are compiled for AVX2 beside the baseline and chosen when the
+// program starts (GCC's function multi-versioning): no FMA, so both give
+// the same bytes, the AVX2 one twice as many samples per instruction.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define EYESTREAM_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define EYESTREAM_VECTOR_CLONES
+#endif
+
+// out[i] = sum_t w[t] (in[i - t c] + in[i + t c]) over the row's interior
+// samples; the r pixels at each end read replicated border pixels.
+EYESTREAM_VECTOR_CLONES
+void blur_row(const float* in, float* out, int width, int channels, const std::vector<float>& w) {
+  const int r = int(w.size()) - 1;
+  const int lo = std::min(r, width) * channels, hi = std::max(lo, (width - r) * channels);
+  for (int i = lo; i < hi; ++i) out[i] = w[0] * in[i];
+  for (int t = 1; t <= r; ++t) {
+    const float wt = w[size_t(t)];
+    const int s = t * channels;
+    for (int i = lo; i < hi; ++i) out[i] += wt * (in[i - s] + in[i + s]);
+  }
+  const auto edge = [&](int x) {
+    for (int c = 0; c < channels; ++c) {
+      float acc = w[0] * in[x * channels + c];
+      for (int t = 1; t <= r; ++t) {
+        const int a = std::max(x - t, 0), b = std::min(x + t, width - 1);
+        acc += w[size_t(t)] * (in[a * channels + c] + in[b * channels + c]);
+      }
+      out[x * channels + c] = acc;
+    }
+  };
+  for (int x = 0; x < lo / channels; ++x) edge(x);
+  for (int x = hi / channels; x < width; ++x) edge(x);
+}
+
+// out = w[0] rows[0] + sum_t w[t] (rows[-t] + rows[t]) over n samples;
+// rows[t] is the row t below the output's (negative: above).
+EYESTREAM_VECTOR_CLONES
+void blur_column(const float* const* rows, float* out, int n, const std::vector<float>& w) {
+  const int r = int(w.size()) - 1;
+  const float* centre = rows[0];
+  for (int i = 0; i < n; ++i) out[i] = w[0] * centre[i];
+  for (int t = 1; t <= r; ++t) {
+    const float wt = w[size_t(t)];
+    const float* up = rows[-t];
+    const float* down = rows[t];
+    for (int i = 0; i < n; ++i) out[i] += wt * (up[i] + down[i]);
+  }
+}
+
+}  // namespace
+
+void gaussian_blur(const cv::Mat& src, cv::Mat& dst, double sigma) {
+  CV_Assert(src.depth() == CV_32F && sigma > 0.0);
+  const int ksize = cvRound(sigma * 8 + 1) | 1;
+  const cv::Mat k = cv::getGaussianKernel(ksize, sigma, CV_64F);
+  const int r = ksize / 2;
+  std::vector<float> w(size_t(r) + 1);
+  for (int t = 0; t <= r; ++t) w[size_t(t)] = float(k.at<double>(r + t));
+  const int rows = src.rows, cols = src.cols, channels = src.channels(), n = cols * channels;
+  // In place, the source rows a stripe reads would be overwritten by its
+  // neighbour: read from a copy then.
+  cv::Mat input = src.data == dst.data ? src.clone() : src;
+  dst.create(src.size(), src.type());
+  // A few stripes per thread: each keeps a ring of the 2r + 1 rows blurred
+  // across that its next output row reads (row j in slot j mod 2r + 1).
+  const int span = 2 * r + 1;
+  cv::parallel_for_(
+      cv::Range(0, rows),
+      [&](const cv::Range& range) {
+        std::vector<float> ring(size_t(span) * size_t(n));
+        const auto slot = [&](int j) { return &ring[size_t((j - range.start + span) % span) * size_t(n)]; };
+        const auto fill = [&](int j) { blur_row(input.ptr<float>(std::clamp(j, 0, rows - 1)), slot(j), cols, channels, w); };
+        for (int j = range.start - r; j < range.start + r; ++j) fill(j);
+        std::vector<const float*> rows_at(static_cast<size_t>(span));
+        for (int y = range.start; y < range.end; ++y) {
+          fill(y + r);
+          for (int t = -r; t <= r; ++t) rows_at[size_t(t + r)] = slot(y + t);
+          blur_column(&rows_at[size_t(r)], dst.ptr<float>(y), n, w);
+        }
+      },
+      double(std::max(1, cv::getNumThreads()) * 2));
+}
+
+}  // namespace eyestream::retina
