@@ -99,12 +99,17 @@ void RetinaStage::advance(const cv::Mat& rgb, const std::vector<GazeSegment>& fr
   state_.soften(spread_variance_sites2(frame_dt));
 }
 
-cv::Mat RetinaStage::reduce_frame(const cv::Mat& cones) const {
+cv::Size RetinaStage::reduced_frame_size(cv::Size frame) const {
   const double k = grid_.sites_per_pixel();
-  if (k >= 1.0) return cones;
+  if (k >= 1.0) return frame;
+  return {std::max(1, int(std::lround(frame.width * k))), std::max(1, int(std::lround(frame.height * k)))};
+}
+
+cv::Mat RetinaStage::reduce_frame(const cv::Mat& cones) const {
+  const cv::Size size = reduced_frame_size(cones.size());
+  if (size == cones.size()) return cones;
   cv::Mat out;
-  cv::resize(cones, out, cv::Size(std::max(1, int(std::lround(cones.cols * k))), std::max(1, int(std::lround(cones.rows * k)))),
-             0, 0, cv::INTER_AREA);
+  cv::resize(cones, out, size, 0, 0, cv::INTER_AREA);
   return out;
 }
 
@@ -155,7 +160,11 @@ bool RetinaStage::composite(const cv::Mat& tone_mapped, double gaze_x, double ga
     gain = grid_.draw(maps.gain_excess, gaze_x, gaze_y, none);
     bleach = grid_.draw(maps.bleach, gaze_x, gaze_y, none);
   } else {
-    const cv::Mat sites = p.gaze_positions({gaze_x, gaze_y}, p.frame_size(), grid_.sites_per_pixel(), grid_.fovea());
+    // Drawn at the grid's own resolution (the frame reduced as for the
+    // stimulus), where the maps hold all their detail, and enlarged
+    // bilinearly in the composite.
+    const cv::Size size = reduced_frame_size(p.frame_size());
+    const cv::Mat sites = p.gaze_positions({gaze_x, gaze_y}, size, grid_.sites_per_pixel(), grid_.fovea());
     gain = grid_.draw_at(maps.gain_excess, sites, none);
     bleach = grid_.draw_at(maps.bleach, sites, none);
   }

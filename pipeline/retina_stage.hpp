@@ -60,6 +60,9 @@ class RetinaStage {
 
  private:
   // The cone stimulus averaged down to about the grid's resolution.
+  // The frame at the grid's resolution (sites per pixel below 1), where the
+  // stimulus is sampled and the afterimages are drawn.
+  cv::Size reduced_frame_size(cv::Size frame) const;
   cv::Mat reduce_frame(const cv::Mat& cones) const;
   // The grid's stimulus for the gaze at plane point (plane_x, plane_y).
   cv::Mat sample(const cv::Mat& reduced, double plane_x, double plane_y, const cv::Scalar& surround) const;

@@ -1,6 +1,7 @@
 #include "retina/acuity_loss.hpp"
 
 #include "retina/acuity_curve.hpp"
+#include "retina/bilinear_axis.hpp"
 #include "retina/gaussian_blur.hpp"
 
 #include <algorithm>
@@ -92,27 +93,6 @@ cv::Mat acuity_lowpass(const cv::Mat& src, double sigma, int f) {
   return out;
 }
 
-namespace {
-
-// Where full-resolution pixel i reads a map reduced by f, bilinearly:
-// centres at (i + 0.5) / f - 0.5, borders replicated (as cv::resize
-// INTER_LINEAR).
-struct BilinearAxis {
-  std::vector<int> lo, hi;
-  std::vector<float> w;  // weight of hi
-  BilinearAxis(int n, int f, int reduced) : lo(size_t(n)), hi(size_t(n)), w(size_t(n)) {
-    const float inv = 1.0f / float(f);
-    for (int i = 0; i < n; ++i) {
-      const float g = std::clamp((float(i) + 0.5f) * inv - 0.5f, 0.0f, float(reduced - 1));
-      lo[size_t(i)] = int(g);
-      hi[size_t(i)] = std::min(lo[size_t(i)] + 1, reduced - 1);
-      w[size_t(i)] = g - float(lo[size_t(i)]);
-    }
-  }
-};
-
-}  // namespace
-
 void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
   CV_Assert(image.type() == CV_32FC3 && level.type() == CV_32F && level.size() == image.size());
   // Blur levels L_i of sigma_i (L_0 the image); band i = L_(i-1) - L_i is
@@ -179,8 +159,8 @@ void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
   std::vector<std::unique_ptr<BilinearAxis>> across(size_t(deepest) + 1), down(size_t(deepest) + 1);
   for (int i = 1; i <= deepest; ++i)
     if (factor[size_t(i)] > 1) {
-      across[size_t(i)] = std::make_unique<BilinearAxis>(image.cols, factor[size_t(i)], levels[size_t(i)].cols);
-      down[size_t(i)] = std::make_unique<BilinearAxis>(image.rows, factor[size_t(i)], levels[size_t(i)].rows);
+      across[size_t(i)] = std::make_unique<BilinearAxis>(image.cols, levels[size_t(i)].cols, 1.0f / float(factor[size_t(i)]));
+      down[size_t(i)] = std::make_unique<BilinearAxis>(image.rows, levels[size_t(i)].rows, 1.0f / float(factor[size_t(i)]));
     }
   cv::parallel_for_(cv::Range(0, image.rows), [&](const cv::Range& rows) {
     for (int y = rows.start; y < rows.end; ++y) {
