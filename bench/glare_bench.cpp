@@ -7,15 +7,26 @@
 
 #include "pipeline/frame_buffer_pool.hpp"
 #include "pipeline/glare_stage.hpp"
+#include "pipeline/quality_presets.hpp"
 
 namespace {
 
 using namespace eyestream;
 
-// engine: "exact", "split2", "split4" or "gaussian"; model: "vos" or "cie".
+// engine: "exact", "split2", "split4", "gaussian", or a preset's glare
+// ("preset:fast", "preset:balanced"); model: "vos" or "cie".
 pipeline::Plan plan_for(int width, const std::string& engine, const std::string& model = "vos",
                         bool flare_lines = true) {
   pipeline::Settings s;
+  if (engine.rfind("preset:", 0) == 0) {
+    pipeline::apply_quality_preset(engine.substr(7), s);
+    s.skip = false;
+    io::SourceInfo info;
+    info.width = width;
+    info.height = width * 9 / 16;
+    info.frames_per_second = 30;
+    return pipeline::compile_plan(s, info);
+  }
   s.psf_model = engine == "gaussian" ? "gaussian" : model;
   s.flare_lines = flare_lines;
   s.skip = false;  // the same frame every iteration: not the still-frame cache
@@ -64,6 +75,8 @@ BENCHMARK_CAPTURE(BM_GlareFrame, vos_fft, std::string("exact"), std::string("vos
 BENCHMARK_CAPTURE(BM_GlareFrame, cie_fft, std::string("exact"), std::string("cie"))->Apply(widths);
 BENCHMARK_CAPTURE(BM_GlareFrame, vos_split2, std::string("split2"), std::string("vos"))->Apply(widths);
 BENCHMARK_CAPTURE(BM_GlareFrame, vos_split4, std::string("split4"), std::string("vos"))->Apply(widths);
+BENCHMARK_CAPTURE(BM_GlareFrame, balanced, std::string("preset:balanced"), std::string("vos"))->Apply(widths);
+BENCHMARK_CAPTURE(BM_GlareFrame, fast, std::string("preset:fast"), std::string("vos"))->Apply(widths);
 BENCHMARK_CAPTURE(BM_GlareFrame, gaussian, std::string("gaussian"), std::string("vos"))->Apply(widths);
 BENCHMARK_CAPTURE(BM_KernelBuild, vos_flare_lines, std::string("vos"), true)->Apply(build_widths);
 BENCHMARK_CAPTURE(BM_KernelBuild, vos_plain, std::string("vos"), false)->Apply(build_widths);

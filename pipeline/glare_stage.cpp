@@ -9,13 +9,34 @@
 
 namespace eyestream::pipeline {
 
+namespace {
+
+// Halved when the plane has at most half the frame's px/deg (and the frame
+// is big enough to halve).
+cv::Size halved_frame(const Plan& plan) {
+  if (plan.glare.plane_scale > 0.5 || plan.width < 64 || plan.height < 64) return {};
+  // An equidistant plane at exactly half would be the halved frame itself.
+  if (plan.projection->kind() == Projection::equidistant && plan.glare.plane_scale == 0.5) return {};
+  return {(plan.width + 1) / 2, (plan.height + 1) / 2};
+}
+
+std::shared_ptr<const FrameProjection> glare_plane(const Plan& plan) {
+  const cv::Size halved = halved_frame(plan);
+  if (!halved.empty())  // the halved frame spans the same angles at half the pixels per degree
+    return std::make_shared<const FrameProjection>(halved.width, halved.height, plan.fov_deg, plan.projection->kind(),
+                                                   2.0 * plan.glare.plane_scale);
+  if (plan.glare.plane_scale == 1.0) return plan.projection;
+  return std::make_shared<const FrameProjection>(plan.width, plan.height, plan.fov_deg, plan.projection->kind(),
+                                                 plan.glare.plane_scale);
+}
+
+}  // namespace
+
 GlareStage::GlareStage(const Plan& plan)
     : plan_(plan),
       optics_(plan.eye_optics()),
-      plane_(plan.glare.plane_scale == 1.0
-                 ? plan.projection
-                 : std::make_shared<const FrameProjection>(plan.width, plan.height, plan.fov_deg,
-                                                           plan.projection->kind(), plan.glare.plane_scale)),
+      halved_(halved_frame(plan)),
+      plane_(glare_plane(plan)),
       ppd_(plane_->pixels_per_degree()) {
   const cv::Size plane = plane_->plane_size();
   if (plan.glare.gaussian) {  // no kernels: a separable blur does the work
@@ -78,8 +99,16 @@ std::optional<double> GlareStage::veil_at(const cv::Mat& luminance, double adapt
   if (p.identity()) return glare::veiling_luminance(luminance, kernels_, w, x, y, exclusion_px);
   // On the angle plane (each pixel's luminance times its solid angle),
   // between the four plane pixels around the point, as the picture is.
-  const cv::Point2d at = p.to_plane({x, y});
-  return glare::veiling_luminance_between(p.to_plane_flux(luminance), kernels_, w, at.x, at.y, exclusion_px);
+  const cv::Mat frame = to_glare_frame(luminance);
+  const cv::Point2d at = p.to_plane({x * frame.cols / luminance.cols, y * frame.rows / luminance.rows});
+  return glare::veiling_luminance_between(p.to_plane_flux(frame), kernels_, w, at.x, at.y, exclusion_px);
+}
+
+cv::Mat GlareStage::to_glare_frame(const cv::Mat& frame) const {
+  if (halved_.empty() || frame.size() == halved_) return frame;
+  cv::Mat out;
+  cv::resize(frame, out, halved_, 0, 0, cv::INTER_AREA);
+  return out;
 }
 
 cv::Vec3f GlareStage::kept_share(const glare::PsfWeights& w) const {
@@ -93,7 +122,7 @@ cv::Mat GlareStage::spread(const cv::Mat& rgb, const glare::PsfWeights& w) const
   // The plane carries the light that leaves its pixel; the light the PSF
   // keeps there stays on the frame's pixels, sharp.
   const cv::Vec3f kept = kept_share(w);
-  const cv::Mat flux = p.to_plane_flux(rgb);
+  const cv::Mat flux = p.to_plane_flux(to_glare_frame(rgb));
   cv::Mat scattered = spread_plane(flux, w);
   if (plan_.glare.gaussian) {  // a blur keeps its centre: take it out
     cv::Mat centre;
@@ -102,6 +131,7 @@ cv::Mat GlareStage::spread(const cv::Mat& rgb, const glare::PsfWeights& w) const
     scattered = cv::max(scattered, 0.0);
   }
   cv::Mat out = p.to_frame_image(scattered);
+  if (out.size() != rgb.size()) cv::resize(out, out, rgb.size(), 0, 0, cv::INTER_LINEAR);
   cv::parallel_for_(cv::Range(0, out.rows), [&](const cv::Range& rows) {
     for (int y = rows.start; y < rows.end; ++y) {
       cv::Vec3f* o = out.ptr<cv::Vec3f>(y);

@@ -62,8 +62,15 @@ class GlareStage {
 
   const Plan plan_;
   const glare::EyeOptics optics_;
+  // The frame halved each way (area mean) before the splat to the plane,
+  // or empty: a plane at half the frame's px/deg or less receives about
+  // one frame pixel in four per plane pixel, and a 2x2 mean carries the
+  // same light as its four pixels (kept light stays full-resolution).
+  cv::Size halved_;
+  cv::Mat to_glare_frame(const cv::Mat& frame) const;
   // The angle plane of the convolution (the plan's, or one at
-  // plan.glare.plane_scale of its resolution) and its px/deg.
+  // plan.glare.plane_scale of its resolution, from the halved frame when
+  // there is one) and its px/deg.
   std::shared_ptr<const FrameProjection> plane_;
   double ppd_;
   glare::ComponentKernels kernels_;

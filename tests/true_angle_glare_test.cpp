@@ -14,6 +14,7 @@
 #include "io/exr_file.hpp"
 #include "io/gaze_csv.hpp"
 #include "pipeline/glare_stage.hpp"
+#include "pipeline/quality_presets.hpp"
 #include "retina/luminance.hpp"
 #include "tests/test_support.hpp"
 #include "tests/true_angle_oracle.hpp"
@@ -84,6 +85,31 @@ TEST(TrueAngles, TheRetinalVeilIsThePhysicalOneOnA120DegFrame) {
       const double seen = retina::photopic_luminance(retinal.at<cv::Vec3f>(int(above.y), int(above.x)));
       EXPECT_NEAR(seen / physical, 1.0, 0.15) << engine << ": 5 deg above the light at 30 deg";
       std::cout << engine << ": 5 deg above a light 30 deg off axis: " << seen / physical << " of the physical veil\n";
+    }
+  }
+}
+
+// The presets convolve on coarser planes; `fast` halves the frame before
+// the splat (80 px/deg here, so its plane is at 40). The veil 1 to 5 deg
+// from a light at the centre of a 12 deg frame is still the physical one.
+TEST(TrueAngles, EveryPresetsGlareIsThePhysicalVeil) {
+  const test::PinholeFrame pinhole{kW, kH, 12.0};
+  for (const char* preset : {"reference", "balanced", "fast"}) {
+    Settings s = wide("exact", "rectilinear");
+    apply_quality_preset(preset, s);
+    s.geometry.fov_deg = 12.0;
+    const Plan plan = test::plan_for(s, kW, kH);
+    GlareStage stage(plan);
+    const auto psf = psf_of(plan, 1.0, 3.0);
+    const cv::Mat scene = light_at(kW, kH, kW / 2.0);
+    const cv::Mat luminance = luminance_of(scene);
+    const cv::Mat retinal = stage.apply(scene, 1.0, 0.0, 3.0);
+    for (const double t : {1.0, 2.0, 3.5, 5.0}) {
+      const int x = int(pinhole.x_at_deg(t));
+      const double physical = test::direct_veil(pinhole, luminance, {x + 0.5, kH / 2 + 0.5}, psf, 0.0);
+      const double seen = retina::photopic_luminance(retinal.at<cv::Vec3f>(kH / 2, x));
+      EXPECT_NEAR(seen / physical, 1.0, 0.05) << preset << ": veil " << t << " deg from the light: " << seen
+                                              << " against " << physical << " cd/m^2";
     }
   }
 }
