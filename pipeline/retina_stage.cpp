@@ -1,5 +1,7 @@
 #include "pipeline/retina_stage.hpp"
 
+#include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
@@ -44,6 +46,34 @@ std::vector<StepGroup> group_segments(const std::vector<GazeSegment>& segments, 
     g.last = i;
   }
   return groups;
+}
+
+// The grid sites that bilinear reads at `sites` (CV_32FC2, grid
+// coordinates) touch, clipped to the grid, with `sites` made relative to
+// that region. Reads wholly outside the grid stay outside it.
+cv::Rect read_region(cv::Mat& sites, cv::Size grid) {
+  std::vector<cv::Vec4f> rows(size_t(sites.rows), cv::Vec4f(FLT_MAX, FLT_MAX, -FLT_MAX, -FLT_MAX));
+  cv::parallel_for_(cv::Range(0, sites.rows), [&](const cv::Range& r) {
+    for (int y = r.start; y < r.end; ++y) {
+      cv::Vec4f& b = rows[size_t(y)];
+      const cv::Vec2f* p = sites.ptr<cv::Vec2f>(y);
+      for (int x = 0; x < sites.cols; ++x) {
+        b[0] = std::min(b[0], p[x][0]);
+        b[1] = std::min(b[1], p[x][1]);
+        b[2] = std::max(b[2], p[x][0]);
+        b[3] = std::max(b[3], p[x][1]);
+      }
+    }
+  });
+  cv::Vec4f box(FLT_MAX, FLT_MAX, -FLT_MAX, -FLT_MAX);
+  for (const cv::Vec4f& b : rows) box = {std::min(box[0], b[0]), std::min(box[1], b[1]), std::max(box[2], b[2]), std::max(box[3], b[3])};
+  if (!(box[0] <= box[2] && box[1] <= box[3])) return {cv::Point(0, 0), grid};  // no finite position: the whole grid
+  const auto lo = [](float v, int n) { return std::clamp(int(std::floor(std::max(v, -1.0f))), 0, n); };
+  const auto hi = [](float v, int n) { return std::clamp(int(std::floor(std::min(v, float(n)))) + 2, 0, n); };
+  const cv::Rect region(cv::Point(lo(box[0], grid.width), lo(box[1], grid.height)),
+                        cv::Point(hi(box[2], grid.width), hi(box[3], grid.height)));
+  if (region.x != 0 || region.y != 0) sites -= cv::Scalar(region.x, region.y);
+  return region;
 }
 
 }  // namespace
@@ -152,11 +182,12 @@ bool RetinaStage::composite(const cv::Mat& tone_mapped, double gaze_x, double ga
     out = tone_mapped;
     return false;
   }
-  const retina::AfterimageMaps maps = state_.afterimages(plan_.retina.afterimages, visibility_);
+  retina::AfterimageMaps maps;
   const FrameProjection& p = *plan_.projection;
   const cv::Scalar none = cv::Scalar::all(0.0);
   cv::Mat gain, bleach;
   if (p.identity()) {
+    maps = state_.afterimages(plan_.retina.afterimages, visibility_);
     gain = grid_.draw(maps.gain_excess, gaze_x, gaze_y, none);
     bleach = grid_.draw(maps.bleach, gaze_x, gaze_y, none);
   } else {
@@ -164,7 +195,14 @@ bool RetinaStage::composite(const cv::Mat& tone_mapped, double gaze_x, double ga
     // stimulus), where the maps hold all their detail, and enlarged
     // bilinearly in the composite.
     const cv::Size size = reduced_frame_size(p.frame_size());
-    const cv::Mat sites = p.gaze_positions({gaze_x, gaze_y}, size, grid_.sites_per_pixel(), grid_.fovea());
+    cv::Mat sites = p.gaze_positions({gaze_x, gaze_y}, size, grid_.sites_per_pixel(), grid_.fovea());
+    // Only the sites the frame reads are made (about a quarter of the grid).
+    const cv::Rect region = read_region(sites, grid_.size());
+    maps = state_.afterimages(plan_.retina.afterimages, visibility_, region);
+    if (maps.gain_excess.empty()) {  // the frame sees no site
+      out = tone_mapped;
+      return false;
+    }
     gain = grid_.draw_at(maps.gain_excess, sites, none);
     bleach = grid_.draw_at(maps.bleach, sites, none);
   }

@@ -57,7 +57,20 @@ void step_sites(const cv::Mat& lms, const ToneCurve& curve, const PhotoreceptorP
       Px<T>* r = response.ptr<Px<T>>(y);
       Px<T>* b = bleached.ptr<Px<T>>(y);
       Px<T>* d = deficit.ptr<Px<T>>(y);
-      for (int x = 0; x < lms.cols; ++x)
+      Px<T> b_in, d_in;  // the state the last computed site started from
+      for (int x = 0; x < lms.cols; ++x) {
+        // A site with the stimulus and state of the one before it (the
+        // uniform surround most of the grid sees) takes its results: the
+        // same inputs give the same bytes.
+        if (x > 0 && s[x] == s[x - 1] && b[x] == b_in && d[x] == d_in) {
+          rest[x] = rest[x - 1];
+          r[x] = r[x - 1];
+          b[x] = b[x - 1];
+          d[x] = d[x - 1];
+          continue;
+        }
+        b_in = b[x];
+        d_in = d[x];
         for (int c = 0; c < 3; ++c) {
           const T i = stimulus(s[x][c]);
           // Jacobs et al. 2015 eqs. 6 and 1.
@@ -68,6 +81,7 @@ void step_sites(const cv::Mat& lms, const ToneCurve& curve, const PhotoreceptorP
           const T d_inf = T(c_max) * r[x][c];  // Jacobs et al. 2015 eq. 10 as a deficit
           d[x][c] = std::clamp((d[x][c] - d_inf) * decay + d_inf, T(0), T(c_max));  // Jacobs et al. 2015 eq. 9
         }
+      }
     }
   });
 }
@@ -151,14 +165,19 @@ void RetinaState::soften(double variance_sites2) {
   diffuse_departure(deficit_, response_, c_max_, variance_sites2, c_max_);
 }
 
-AfterimageMaps RetinaState::afterimages(const AfterimageOptions& options, const cv::Mat& visibility) const {
+AfterimageMaps RetinaState::afterimages(const AfterimageOptions& options, const cv::Mat& visibility,
+                                        cv::Rect region) const {
   CV_Assert(!response_.empty() && visibility.size() == bleached_.size() && visibility.type() == CV_32F);
+  const cv::Rect grid(cv::Point(0, 0), bleached_.size());
+  region = region.empty() ? grid : region & grid;
   AfterimageMaps maps;
+  if (region.empty()) return maps;
   if (is_double(bleached_))
-    afterimage_sites<double>(params_, c_max_, options, bleached_, deficit_, bleached_rest_, response_, visibility,
-                             maps);
+    afterimage_sites<double>(params_, c_max_, options, bleached_(region), deficit_(region), bleached_rest_(region),
+                             response_(region), visibility(region), maps);
   else
-    afterimage_sites<float>(params_, c_max_, options, bleached_, deficit_, bleached_rest_, response_, visibility, maps);
+    afterimage_sites<float>(params_, c_max_, options, bleached_(region), deficit_(region), bleached_rest_(region),
+                            response_(region), visibility(region), maps);
   return maps;
 }
 

@@ -51,7 +51,11 @@ class RetinaState {
 
   // The afterimage terms for the last stimulus, weighted by `visibility`
   // (CV_32F, grid-sized, in [0, 1]: the fall-off away from the fovea).
-  AfterimageMaps afterimages(const AfterimageOptions& options, const cv::Mat& visibility) const;
+  // Only the sites in `region` (default: the whole grid) are computed and
+  // the maps are that region's size (site (x, y) of the grid at
+  // (x - region.x, y - region.y)): the frame sees about a quarter of the grid.
+  AfterimageMaps afterimages(const AfterimageOptions& options, const cv::Mat& visibility,
+                             cv::Rect region = cv::Rect()) const;
 
   const cv::Mat& bleached() const { return bleached_; }  // B, LMS
   const cv::Mat& deficit() const { return deficit_; }    // D = C_max - C, LMS

@@ -49,7 +49,6 @@ cv::Mat RetinalGrid::draw(const cv::Mat& map, double gaze_x, double gaze_y, cons
 }
 
 cv::Mat RetinalGrid::draw_at(const cv::Mat& map, const cv::Mat& sites, const cv::Scalar& outside) const {
-  CV_Assert(map.size() == size_);
   cv::Mat out;
   cv::remap(map, out, sites, cv::Mat(), cv::INTER_LINEAR, cv::BORDER_CONSTANT, outside);
   return out;

@@ -40,7 +40,8 @@ class RetinalGrid {
   // gaze_y), bilinearly. Frame pixels beyond the grid get `outside`.
   cv::Mat draw(const cv::Mat& map, double gaze_x, double gaze_y, const cv::Scalar& outside) const;
   // The same for a frame whose pixels see the sites `sites` (CV_32FC2, the
-  // output's size; site coordinates, centres at integers).
+  // output's size; coordinates in `map`, centres at integers: `map` may be
+  // a region of the grid, its sites then relative to the region).
   cv::Mat draw_at(const cv::Mat& map, const cv::Mat& sites, const cv::Scalar& outside) const;
   // The fovea in site coordinates.
   cv::Point2d fovea() const { return {centre_x_, centre_y_}; }
