@@ -12,6 +12,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   zlib1g-dev  # the tests check PNG chunk CRCs with zlib (an independent CRC-32)
+  python3-dev pybind11-dev python3-numpy  # the Python module (python/) and its tests
 )
 
 missing=()

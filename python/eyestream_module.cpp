@@ -1,0 +1,219 @@
+// The Python module `eyestream` (pybind11): the library's Eye
+// (eyestream/eye.hpp) for numpy arrays, with keyword settings named as
+// the command line's options ("viewer_age" for --viewer-age). Frames that
+// are float32 with their pixels packed are read in place; the GIL is
+// released while a frame is processed.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <eyestream/eye.hpp>
+#include <sstream>
+
+#include "pipeline/parameter.hpp"
+#include "pipeline/quality_presets.hpp"
+#include "pipeline/settings.hpp"
+
+namespace py = pybind11;
+
+namespace {
+
+using eyestream::Eye;
+
+std::string setting_text(const py::handle& v) {
+  if (py::isinstance<py::bool_>(v)) return v.cast<bool>() ? "true" : "false";
+  return py::str(v).cast<std::string>();
+}
+
+// Samples as (t, x, y[, closed[, lost]]) rows: a sequence of tuples or an
+// N x 3..5 array.
+std::vector<eyestream::Gaze> gaze_samples(const py::object& gaze) {
+  std::vector<eyestream::Gaze> out;
+  if (gaze.is_none()) return out;
+  for (const py::handle row : gaze) {
+    const py::sequence s = py::reinterpret_borrow<py::sequence>(row);
+    const size_t n = py::len(s);
+    if (n < 3 || n > 5) throw py::value_error("a gaze sample is (t, x, y[, closed[, lost]]), not " + std::to_string(n) + " values");
+    eyestream::Gaze g;
+    g.t_s = s[0].cast<double>();
+    g.x = s[1].cast<double>();
+    g.y = s[2].cast<double>();
+    g.closed = n > 3 && s[3].cast<double>() != 0.0;
+    g.lost = n > 4 && s[4].cast<double>() != 0.0;
+    out.push_back(g);
+  }
+  return out;
+}
+
+// A numpy view of a cv::Mat that keeps the Mat (and its buffer) alive.
+py::array to_numpy(const cv::Mat& m) {
+  auto* owner = new cv::Mat(m);
+  const py::capsule keep(owner, [](void* p) { delete static_cast<cv::Mat*>(p); });
+  const std::vector<py::ssize_t> shape{m.rows, m.cols, m.channels()};
+  const std::vector<py::ssize_t> strides{py::ssize_t(m.step[0]), py::ssize_t(m.elemSize()), py::ssize_t(m.elemSize1())};
+  switch (m.depth()) {
+    case CV_8U: return py::array(py::dtype::of<std::uint8_t>(), shape, strides, m.data, keep);
+    case CV_16U: return py::array(py::dtype::of<std::uint16_t>(), shape, strides, m.data, keep);
+    case CV_32F: return py::array(py::dtype::of<float>(), shape, strides, m.data, keep);
+    case CV_64F: return py::array(py::dtype::of<double>(), shape, strides, m.data, keep);
+    default: throw py::type_error("an image of an unexpected depth");
+  }
+}
+
+cv::Mat from_numpy(const py::array& a) {
+  if (a.ndim() != 3) throw py::value_error("a state matrix is rows x cols x channels");
+  const auto rows = int(a.shape(0)), cols = int(a.shape(1)), channels = int(a.shape(2));
+  int depth = -1;
+  if (a.dtype().is(py::dtype::of<float>())) depth = CV_32F;
+  if (a.dtype().is(py::dtype::of<double>())) depth = CV_64F;
+  if (depth < 0 || channels < 1 || channels > 4) throw py::value_error("a state matrix is float32 or float64 with 1-4 channels");
+  if (rows == 0 || cols == 0) return cv::Mat();
+  const py::array packed = py::array::ensure(a, py::array::c_style);
+  return cv::Mat(rows, cols, CV_MAKETYPE(depth, channels), const_cast<void*>(packed.data())).clone();
+}
+
+// The eye and what its last frame gave.
+struct PyEye {
+  Eye eye;
+  eyestream::Frame last;
+
+  py::array process(const py::array& frame, const py::object& gaze) {
+    const int w = eye.width(), h = eye.height();
+    if (frame.ndim() != 3 || frame.shape(0) != h || frame.shape(1) != w || frame.shape(2) != 3) {
+      std::ostringstream shape;
+      for (py::ssize_t i = 0; i < frame.ndim(); ++i) shape << (i ? "x" : "") << frame.shape(i);
+      throw eyestream::Error("frame: a " + shape.str() + " array, not " + std::to_string(h) + "x" + std::to_string(w) + "x3", 2);
+    }
+    const std::vector<eyestream::Gaze> samples = gaze_samples(gaze);
+    // float32 with each row's pixels packed is read where it lies; anything
+    // else is converted first.
+    const bool packed = frame.dtype().is(py::dtype::of<float>()) && frame.strides(2) == 4 && frame.strides(1) == 12 &&
+                        frame.strides(0) >= 12 * w;
+    const py::array held =
+        packed ? frame : py::array(py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(frame));
+    if (!held) throw py::type_error("frame: not convertible to float32");
+    const auto* pixels = static_cast<const float*>(held.data());
+    const size_t stride = size_t(held.strides(0));
+    {
+      py::gil_scoped_release unlocked;
+      last = eye.process(pixels, stride, samples);
+    }
+    return to_numpy(last.linear);
+  }
+
+  py::dict report() const {
+    const eyestream::FrameReport& r = last.report;
+    py::dict d;
+    d["adaptation_cd_m2"] = r.adaptation_cd_m2;
+    d["pupil_mm"] = r.pupil_mm;
+    d["gaze_x"] = r.gaze_x;
+    d["gaze_y"] = r.gaze_y;
+    d["eye_closed"] = r.eye_closed;
+    d["glare"] = r.glare;
+    d["retina"] = r.retina;
+    d["mesopic"] = r.mesopic;
+    d["afterimages"] = r.afterimages;
+    return d;
+  }
+
+  py::tuple state() const {
+    const Eye::State s = eye.state();
+    py::list mats;
+    for (const cv::Mat& m : s.mats) mats.append(m.empty() ? py::array(py::dtype::of<float>(), std::vector<py::ssize_t>{0, 0, 3}) : to_numpy(m));
+    return py::make_tuple(mats, s.numbers);
+  }
+
+  void restore(const py::tuple& t) {
+    if (py::len(t) != 2) throw eyestream::Error("the eye's state is malformed", 2);
+    Eye::State s;
+    for (const py::handle m : t[0].cast<py::list>()) s.mats.push_back(from_numpy(py::reinterpret_borrow<py::array>(m)));
+    s.numbers = t[1].cast<std::vector<double>>();
+    eye.restore(s);
+  }
+};
+
+// The run command's parameters as the keywords take them, from the table
+// that makes the command line (pipeline/settings.hpp), at their defaults
+// under `quality`.
+std::vector<eyestream::pipeline::Param> parameters_of(eyestream::pipeline::Settings& s, const std::string& quality) {
+  eyestream::pipeline::apply_quality_preset(quality, s);
+  return eyestream::pipeline::run_parameters(s).params();
+}
+
+std::string keyword(std::string name) {
+  for (char& c : name)
+    if (c == '-') c = '_';
+  return name;
+}
+
+std::string eye_doc() {
+  eyestream::pipeline::Settings s;
+  std::ostringstream doc;
+  doc << "Eye(width, height, fps, **settings)\n\n"
+         "One viewer's eye for a width x height stream at fps frames/s. The settings are the options of\n"
+         "`eyestream run`, '-' written '_' (viewer_age=70, quality=\"fast\"); \"quality\" picks the preset the\n"
+         "others override. Defaults below are those of quality=\"balanced\".\n\n";
+  for (const auto& p : parameters_of(s, "balanced")) {
+    doc << "  " << keyword(p.name);
+    if (!p.unit.empty()) doc << " [" << p.unit << "]";
+    doc << ": " << p.help << " (default " << eyestream::pipeline::ParamSet::value_text(p) << ")\n";
+  }
+  return doc.str();
+}
+
+}  // namespace
+
+PYBIND11_MODULE(eyestream, m) {
+  m.doc() = "eyestream: HDR frames through a model of one viewer's eye (adaptation, glare, mesopic vision, "
+            "afterimages), frame by frame from numpy.";
+  static py::exception<eyestream::Error> error(m, "Error");
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const eyestream::Error& e) {
+      PyErr_SetObject(error.ptr(), py::make_tuple(e.what(), e.exit_code()).ptr());
+    }
+  });
+  m.attr("__version__") = EYESTREAM_VERSION;
+
+  py::class_<PyEye>(m, "Eye", eye_doc().c_str())
+      .def(py::init([](int width, int height, double fps, const py::kwargs& settings) {
+             std::map<std::string, std::string> named;
+             for (const auto& [k, v] : settings) named[k.cast<std::string>()] = setting_text(v);
+             return new PyEye{Eye(width, height, fps, named), {}};
+           }),
+           py::arg("width"), py::arg("height"), py::arg("fps"))
+      .def("process", &PyEye::process, py::arg("frame"), py::arg("gaze") = py::none(),
+           "process(frame, gaze=None) -> the display-linear image (float32 HxWx3, 1 = the display's peak).\n\n"
+           "frame: HxWx3 linear Rec.709 RGB in cd/m^2 (float32 with packed pixels is read in place, anything\n"
+           "else converted). gaze: the samples (t, x, y[, closed[, lost]]) inside the frame's interval\n"
+           "[n / fps, (n + 1) / fps), in seconds and frame pixels; without samples the last gaze holds.")
+      .def_property_readonly("code", [](const PyEye& e) { return to_numpy(e.last.code); },
+                             "the last frame encoded for the display and dithered (uint8 HxWx3; uint16 with png_bits=16)")
+      .def_property_readonly("report", &PyEye::report, "what happened to the last frame (a dict)")
+      .def("state", &PyEye::state, "the eye's state between frames (a copy), for restore()")
+      .def("restore", &PyEye::restore, py::arg("state"), "resume from a state() of an eye with the same settings")
+      .def("describe", [](const PyEye& e) { return e.eye.describe(); }, "the resolved settings, one per line")
+      .def_property_readonly("width", [](const PyEye& e) { return e.eye.width(); })
+      .def_property_readonly("height", [](const PyEye& e) { return e.eye.height(); })
+      .def_property_readonly("fps", [](const PyEye& e) { return e.eye.fps(); });
+
+  m.def(
+      "parameters",
+      [](const std::string& quality) {
+        eyestream::pipeline::Settings s;
+        py::list out;
+        for (const auto& p : parameters_of(s, quality)) {
+          py::dict d;
+          d["name"] = keyword(p.name);
+          d["option"] = "--" + p.name;
+          d["unit"] = p.unit;
+          d["help"] = p.help;
+          d["default"] = eyestream::pipeline::ParamSet::value_text(p);
+          d["choices"] = p.choices;
+          out.append(d);
+        }
+        return out;
+      },
+      py::arg("quality") = "balanced", "the settings Eye takes, with their units, defaults under `quality` and help");
+}

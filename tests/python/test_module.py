@@ -1,0 +1,189 @@
+"""The Python module against the command line and itself.
+
+Run by ctest (tests/CMakeLists.txt) with PYTHONPATH at the built module and
+EYESTREAM at the built program. The command line's PNG frames are decoded
+here with zlib alone (an independent reader), and the module's encoded
+frames must equal them byte for byte.
+"""
+import os
+import struct
+import subprocess
+import tempfile
+import threading
+import unittest
+import zlib
+
+import numpy as np
+
+import eyestream
+
+W, H, FPS, FRAMES = 64, 48, 30.0, 8
+
+
+def scene(n):
+    """Frame n: a 0.05-50 cd/m^2 ramp and a 2e4 cd/m^2 light moving right."""
+    y, x = np.mgrid[0:H, 0:W].astype(np.float32)
+    frame = np.empty((H, W, 3), np.float32)
+    ramp = 0.05 * 1000.0 ** (x / (W - 1))
+    frame[..., 0] = ramp
+    frame[..., 1] = ramp * 0.8
+    frame[..., 2] = ramp * (0.5 + 0.5 * y / (H - 1))
+    frame[20:23, 10 + 4 * n:13 + 4 * n, :] = 2e4
+    return frame
+
+
+def gaze_log():
+    """A sample every 10 ms moving across, with a blink from 0.09 to 0.14 s."""
+    rows = []
+    for i in range(int(FRAMES / FPS / 0.01) + 1):
+        t = round(0.01 * i, 3)
+        closed = 0.09 <= t < 0.14
+        rows.append((t, 20.0 + 3.0 * i, 24.0 - 0.5 * i, closed))
+    return rows
+
+
+def samples_of_frame(log, n):
+    t0, t1 = n / FPS, (n + 1) / FPS
+    return [r for r in log if t0 <= r[0] < t1]
+
+
+def read_png_rgb8(path):
+    """An 8-bit RGB PNG's pixels, decoded with zlib and the PNG filters."""
+    with open(path, "rb") as f:
+        data = f.read()
+    assert data[:8] == b"\x89PNG\r\n\x1a\n", path
+    pos, idat, width = 8, b"", None
+    while pos < len(data):
+        (length,) = struct.unpack(">I", data[pos:pos + 4])
+        kind = data[pos + 4:pos + 8]
+        body = data[pos + 8:pos + 8 + length]
+        if kind == b"IHDR":
+            width, height, depth, colour, _, _, interlace = struct.unpack(">IIBBBBB", body)
+            assert (depth, colour, interlace) == (8, 2, 0), (depth, colour, interlace)
+        elif kind == b"IDAT":
+            idat += body
+        pos += 12 + length
+    raw = zlib.decompress(idat)
+    stride, bpp = width * 3, 3
+    out = np.zeros((height, stride), np.uint8)
+    prev = np.zeros(stride, np.int32)
+    for r in range(height):
+        kind = raw[r * (stride + 1)]
+        line = np.frombuffer(raw, np.uint8, stride, r * (stride + 1) + 1).astype(np.int32)
+        cur = np.zeros(stride, np.int32)
+        for i in range(stride):
+            a = cur[i - bpp] if i >= bpp else 0
+            b = prev[i]
+            c = prev[i - bpp] if i >= bpp else 0
+            if kind == 0:
+                pred = 0
+            elif kind == 1:
+                pred = a
+            elif kind == 2:
+                pred = b
+            elif kind == 3:
+                pred = (a + b) // 2
+            else:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                pred = a if pa <= pb and pa <= pc else (b if pb <= pc else c)
+            cur[i] = (line[i] + pred) & 0xFF
+        out[r] = cur
+        prev = cur
+    return out.reshape(height, width, 3)
+
+
+class MatchesTheCommandLine(unittest.TestCase):
+    def test_every_frame_is_the_command_lines_byte_for_byte(self):
+        log = gaze_log()
+        with tempfile.TemporaryDirectory() as d:
+            with open(os.path.join(d, "gaze.csv"), "w") as f:
+                f.write("t,x,y,event\n")
+                for t, x, y, closed in log:
+                    f.write(f"{t:.3f},{x:.1f},{y:.1f},{'blink' if closed else ''}\n")
+            raw = b"".join(scene(n).tobytes() for n in range(FRAMES))
+            cmd = [os.environ["EYESTREAM"], "run", "-i", "-", "--size", f"{W}x{H}", "--fps", str(FPS),
+                   "--gaze", os.path.join(d, "gaze.csv"), "--viewer-age", "70", "--quality", "fast",
+                   "-o", os.path.join(d, "out", "%05d.png")]
+            subprocess.run(cmd, input=raw, check=True, capture_output=True)
+            eye = eyestream.Eye(W, H, FPS, viewer_age=70, quality="fast")
+            for n in range(FRAMES):
+                eye.process(scene(n), [(t, x, y, c) for t, x, y, c in samples_of_frame(log, n)])
+                expected = read_png_rgb8(os.path.join(d, "out", f"{n:05d}.png"))
+                self.assertTrue(np.array_equal(eye.code, expected), f"frame {n}")
+            self.assertTrue(any(r[3] for r in log), "the log has a blink")
+
+
+class Frames(unittest.TestCase):
+    def test_views_and_other_dtypes_give_the_same_frames(self):
+        packed, strided, doubles = (eyestream.Eye(W, H, FPS) for _ in range(3))
+        for n in range(3):
+            frame = scene(n)
+            wide = np.zeros((H, W + 5, 3), np.float32)
+            wide[:, 2:W + 2] = frame
+            a = packed.process(frame, [(n / FPS, 30.0, 20.0)])
+            b = strided.process(wide[:, 2:W + 2], [(n / FPS, 30.0, 20.0)])  # rows apart by W + 5 pixels
+            c = doubles.process(frame.astype(np.float64), np.array([[n / FPS, 30.0, 20.0]]))
+            self.assertTrue(np.array_equal(a, b) and np.array_equal(a, c), f"frame {n}")
+        self.assertEqual(a.dtype, np.float32)
+        self.assertEqual(a.shape, (H, W, 3))
+
+    def test_the_gil_is_free_while_a_frame_is_processed(self):
+        eye = eyestream.Eye(640, 360, FPS, quality="reference")
+        frame = np.full((360, 640, 3), 0.02, np.float32)  # mesopic: every stage works
+        ticks, done = [0], threading.Event()
+
+        def count():
+            while not done.is_set():
+                ticks[0] += 1
+
+        eye.process(frame)  # the first frame sets up
+        counter = threading.Thread(target=count)
+        counter.start()
+        before = ticks[0]
+        eye.process(frame)
+        during = ticks[0] - before
+        done.set()
+        counter.join()
+        self.assertGreater(during, 1000, "Python ran beside the frame")
+
+
+class StateAndErrors(unittest.TestCase):
+    def test_a_restored_eye_goes_on_bit_for_bit(self):
+        log = gaze_log()
+        first = eyestream.Eye(W, H, FPS, quality="fast")
+        for n in range(4):
+            first.process(scene(n), samples_of_frame(log, n))
+        saved = first.state()
+        second = eyestream.Eye(W, H, FPS, quality="fast")
+        second.restore(saved)
+        for n in range(4, FRAMES):
+            a = first.process(scene(n), samples_of_frame(log, n))
+            b = second.process(scene(n), samples_of_frame(log, n))
+            self.assertTrue(np.array_equal(a, b), f"frame {n}")
+
+    def test_errors_carry_the_command_lines_message_and_exit_code(self):
+        with self.assertRaises(eyestream.Error) as caught:
+            eyestream.Eye(W, H, FPS, viewer_age=500)
+        message, code = caught.exception.args
+        self.assertIn("--viewer-age", message)
+        self.assertEqual(code, 2)
+        with self.assertRaises(eyestream.Error) as caught:
+            eyestream.Eye(W, H, FPS, no_such_option=1)
+        self.assertIn("no-such-option", caught.exception.args[0])
+        eye = eyestream.Eye(W, H, FPS)
+        with self.assertRaises(eyestream.Error):
+            eye.process(np.zeros((H, W + 1, 3), np.float32))
+        with self.assertRaises(ValueError):
+            eye.process(scene(0), [(0.0, 1.0)])
+
+    def test_keywords_and_docstring_come_from_the_option_table(self):
+        table = {p["name"]: p for p in eyestream.parameters()}
+        self.assertEqual(table["viewer_age"]["option"], "--viewer-age")
+        self.assertEqual(table["viewer_age"]["unit"], "years")
+        self.assertIn("viewer_age [years]:", eyestream.Eye.__doc__)
+        self.assertEqual(eyestream.parameters("fast") != eyestream.parameters("reference"), True)
+
+
+if __name__ == "__main__":
+    unittest.main()
