@@ -113,6 +113,9 @@ struct PyEye {
     d["retina"] = r.retina;
     d["mesopic"] = r.mesopic;
     d["afterimages"] = r.afterimages;
+    d["peak_cd_m2"] = r.peak_cd_m2;
+    d["veil_cd_m2"] = r.veil_cd_m2;
+    d["ti_percent"] = r.ti_percent;
     return d;
   }
 

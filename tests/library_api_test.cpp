@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
+#include <sstream>
 
 #include "io/exr_file.hpp"
 #include "io/exr_sequence_source.hpp"
@@ -80,6 +82,50 @@ TEST(LibraryApi, AnEyeComputesWhatTheCommandLineComputes) {
     EXPECT_GT(out.report.adaptation_cd_m2, 0.0);
     EXPECT_GT(out.report.pupil_mm, 1.0);
   }
+}
+
+// The report's columns by name, one map per row.
+std::vector<std::map<std::string, std::string>> read_csv(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> names;
+  std::stringstream header(line);
+  for (std::string f; std::getline(header, f, ',');) names.push_back(f);
+  std::vector<std::map<std::string, std::string>> rows;
+  while (std::getline(in, line)) {
+    std::stringstream row(line);
+    std::map<std::string, std::string> r;
+    std::string f;
+    for (size_t i = 0; i < names.size() && std::getline(row, f, ','); ++i) r[names[i]] = f;
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+TEST(LibraryApi, TheFramesReportHasTheCommandLinesVeilAndTi) {
+  test::ScratchDir dir;
+  ASSERT_EQ(test::run_eyestream("sample headlights -o " + (dir / "h") + " --width 64 --height 36 --duration 0.3")
+                .exit_code,
+            0);
+  const auto r = test::run_eyestream("run -i " + (dir / "h/frames") + " -g " + (dir / "h/gaze.csv") + " -o " +
+                                     (dir / "e/%05d.png") + " --quality fast --report " + (dir / "r.csv"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto rows = read_csv(dir / "r.csv");
+  const Clip clip = load_clip(dir);
+  ASSERT_EQ(rows.size(), clip.frames.size());
+  Eye with(64, 36, clip.fps, {{"quality", "fast"}, {"report", "true"}}), without(64, 36, clip.fps, {{"quality", "fast"}});
+  for (size_t i = 0; i < clip.frames.size(); ++i) {
+    const FrameReport a = with.process(clip.frames[i], clip.gaze[i]).report;
+    const FrameReport b = without.process(clip.frames[i], clip.gaze[i]).report;
+    // The CSV prints 6 significant digits.
+    EXPECT_NEAR(a.veil_cd_m2, std::stod(rows[i].at("veil_cd_m2")), 1e-5 * a.veil_cd_m2) << "frame " << i;
+    EXPECT_NEAR(a.ti_percent, std::stod(rows[i].at("ti_percent")), 1e-5 * a.ti_percent) << "frame " << i;
+    EXPECT_NEAR(a.peak_cd_m2, std::stod(rows[i].at("peak_cd_m2")), 1e-5 * a.peak_cd_m2) << "frame " << i;
+    EXPECT_GT(a.veil_cd_m2, 0.0);
+    EXPECT_EQ(b.veil_cd_m2, -1.0) << "not asked for";
+  }
+  EXPECT_THROW(Eye(8, 8, 30.0, {{"report", "yes"}}), Error);
 }
 
 TEST(LibraryApi, SettingsByTheCommandLinesNamesAndItsMessages) {

@@ -43,11 +43,21 @@ pipeline::Settings compile_settings(const std::map<std::string, std::string>& gi
     named[name] = value;
   }
   if (named.count("quality")) s.quality = named["quality"];
+  // "report": the frame's veil and TI (the command line asks with
+  // --report FILE; here nothing is written).
+  bool report = false;
+  if (named.count("report")) {
+    const std::string v = named["report"];
+    if (v != "true" && v != "false") throw UsageError("eyestream::Eye settings: report is true or false, not '" + v + "'");
+    report = v == "true";
+    named.erase("report");
+  }
   pipeline::apply_quality_preset(s.quality, s);
   pipeline::ParamSet params = pipeline::run_parameters(s);
   nlohmann::json object = nlohmann::json::object();
   for (const auto& [name, value] : named) object[name] = value;
   params.apply_json(object, "eyestream::Eye settings");
+  if (report) s.report = "(eyestream::Eye)";  // any name: the plan only asks whether there is one
   return s;
 }
 
@@ -126,6 +136,11 @@ Frame Eye::process(const cv::Mat& rgb, const std::vector<Gaze>& gaze) {
     retina::encode_display(out.linear, impl_->bits, impl_->index, impl_->plan.encoding, out.code);
     out.report = {std::pow(10.0, r.adaptation_log), impl_->eye.save().pupil_mm.value_or(0.0), r.gaze_x, r.gaze_y,
                   r.eye_closed, r.active.glare, r.active.retina, r.active.mesopic, r.active.afterimages};
+    if (impl_->plan.report) {
+      out.report.peak_cd_m2 = r.peak_cd_m2;
+      out.report.veil_cd_m2 = r.veil_cd_m2;
+      out.report.ti_percent = r.ti_percent;
+    }
     ++impl_->index;
     return out;
   });

@@ -47,6 +47,13 @@ struct FrameReport {
   double gaze_x = 0.0, gaze_y = 0.0;
   bool eye_closed = false;
   bool glare = false, retina = false, mesopic = false, afterimages = false;  // which stages worked
+  // With the setting "report" = "true" (as the command line's --report):
+  // the brightest scene luminance, the veiling luminance at the gaze and
+  // the threshold increment it causes (CIE 1999, as in the report's CSV);
+  // -1 when not asked for or unknown (eyes closed, a PSF without a veil).
+  double peak_cd_m2 = -1.0;
+  double veil_cd_m2 = -1.0;
+  double ti_percent = -1.0;
 };
 
 struct Frame {
