@@ -34,7 +34,15 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
                                        FrameReport* report, const cv::Mat& target_mask) {
   // Non-finite pixels are counted and seen as black; they reach no stage.
   const std::int64_t nonfinite = count_nonfinite(frame.rgb);
-  const cv::Mat scene = nonfinite ? finite_copy(frame.rgb) : frame.rgb;
+  cv::Mat scene = nonfinite ? finite_copy(frame.rgb) : frame.rgb;
+  // What the lens lets through, for an aged lens (before every stage: the
+  // pupil, the adaptation and the glare all see the light that reaches
+  // the retina).
+  if (plan_.lens_filter) {
+    cv::Mat through;
+    cv::transform(scene, through, cv::Matx33f(*plan_.lens_filter));
+    scene = cv::max(through, 0.0f);
+  }
   // What the frame says of the world: beyond its edge (the surround), and
   // the field the pupil responds to.
   auto clock = std::chrono::steady_clock::now();

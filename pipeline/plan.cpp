@@ -1,5 +1,7 @@
 #include "pipeline/plan.hpp"
 
+#include "glare/lens_density.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -50,6 +52,7 @@ Plan compile_plan(const Settings& s, const io::SourceInfo& source) {
   p.glare.display_peak_cd_m2 = s.display_peak_cd_m2;
   p.glare.model = s.psf_model == "cie" ? glare::PsfModel::cie : glare::PsfModel::vos;
   p.glare.flare_lines = s.flare_lines;
+  if (s.lens_yellowing) p.lens_filter = glare::lens_filter_rgb(s.viewer.age_years);
   p.glare.viewer = s.viewer;
   p.glare.viewer.pupil =
       s.pupil_model == "watson-yellott" ? glare::PupilModel::watson_yellott : glare::PupilModel::moon_spencer;
@@ -110,6 +113,12 @@ std::string Plan::describe() const {
     << " log10/s\n"
     << "glare = " << describe_glare(glare) << "\n"
     << "viewer = " << describe_viewer(glare) << "\n"
+    << "lens = "
+    << (lens_filter ? "yellowed for " + std::to_string(int(std::lround(glare.viewer.age_years))) +
+                          " years (Pokorny et al. 1987), blue channel kept " +
+                          std::to_string(int(std::lround(100.0 * (*lens_filter)(2, 2)))) + " %"
+                    : std::string("the standard observer's"))
+    << "\n"
     << "retina state = " << retina.sites_per_pixel << " sites/px, " << (retina.double_precision ? "double" : "float")
     << ", sub-step tolerance " << retina.substep_tolerance_px << " px\n"
     << "afterimages = " << (retina.afterimages.bleaching ? "bleaching" : "no bleaching") << ", "

@@ -2,6 +2,8 @@
 // (the OpenColorIO Config -> Processor idea, DESIGN.md).
 #pragma once
 
+#include <optional>
+
 #include <memory>
 #include <string>
 
@@ -49,6 +51,9 @@ struct GlarePlan {
 
 struct Plan {
   int width = 0, height = 0;
+  // The lens's yellowing for the viewer's age (glare/lens_density.hpp),
+  // applied to the scene before every stage; unset: the standard observer.
+  std::optional<cv::Matx33f> lens_filter;
   double frames_per_second = 30.0;
   double fov_deg = 0.0;
   // The frame's directions and the angle plane the optics and the retina

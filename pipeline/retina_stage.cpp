@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <optional>
 #include <opencv2/imgproc.hpp>
 
 #include "io/exr_file.hpp"
@@ -50,8 +51,8 @@ std::vector<StepGroup> group_segments(const std::vector<GazeSegment>& segments, 
 
 // The grid sites that bilinear reads at `sites` (CV_32FC2, grid
 // coordinates) touch, clipped to the grid, with `sites` made relative to
-// that region. Reads wholly outside the grid stay outside it.
-cv::Rect read_region(cv::Mat& sites, cv::Size grid) {
+// that region; none when every read falls outside the grid.
+std::optional<cv::Rect> read_region(cv::Mat& sites, cv::Size grid) {
   std::vector<cv::Vec4f> rows(size_t(sites.rows), cv::Vec4f(FLT_MAX, FLT_MAX, -FLT_MAX, -FLT_MAX));
   cv::parallel_for_(cv::Range(0, sites.rows), [&](const cv::Range& r) {
     for (int y = r.start; y < r.end; ++y) {
@@ -66,12 +67,17 @@ cv::Rect read_region(cv::Mat& sites, cv::Size grid) {
     }
   });
   cv::Vec4f box(FLT_MAX, FLT_MAX, -FLT_MAX, -FLT_MAX);
-  for (const cv::Vec4f& b : rows) box = {std::min(box[0], b[0]), std::min(box[1], b[1]), std::max(box[2], b[2]), std::max(box[3], b[3])};
-  if (!(box[0] <= box[2] && box[1] <= box[3])) return {cv::Point(0, 0), grid};  // no finite position: the whole grid
-  const auto lo = [](float v, int n) { return std::clamp(int(std::floor(std::max(v, -1.0f))), 0, n); };
-  const auto hi = [](float v, int n) { return std::clamp(int(std::floor(std::min(v, float(n)))) + 2, 0, n); };
-  const cv::Rect region(cv::Point(lo(box[0], grid.width), lo(box[1], grid.height)),
-                        cv::Point(hi(box[2], grid.width), hi(box[3], grid.height)));
+  for (const cv::Vec4f& b : rows)
+    box = {std::min(box[0], b[0]), std::min(box[1], b[1]), std::max(box[2], b[2]), std::max(box[3], b[3])};
+  if (!(box[0] <= box[2] && box[1] <= box[3])) return cv::Rect(cv::Point(0, 0), grid);  // no ordered position: all
+  // Clamped before converting: the positions may be huge or infinite.
+  const auto lo = [](float v, int n) { return int(std::floor(std::clamp(v, -1.0f, float(n)))); };
+  const auto hi = [](float v, int n) { return int(std::floor(std::clamp(v, -1.0f, float(n)))) + 2; };
+  const cv::Rect region =
+      cv::Rect(cv::Point(lo(box[0], grid.width), lo(box[1], grid.height)),
+               cv::Point(hi(box[2], grid.width), hi(box[3], grid.height))) &
+      cv::Rect(cv::Point(0, 0), grid);
+  if (region.empty()) return std::nullopt;
   if (region.x != 0 || region.y != 0) sites -= cv::Scalar(region.x, region.y);
   return region;
 }
@@ -197,18 +203,31 @@ bool RetinaStage::composite(const cv::Mat& tone_mapped, double gaze_x, double ga
     const cv::Size size = reduced_frame_size(p.frame_size());
     cv::Mat sites = p.gaze_positions({gaze_x, gaze_y}, size, grid_.sites_per_pixel(), grid_.fovea());
     // Only the sites the frame reads are made (about a quarter of the grid).
-    const cv::Rect region = read_region(sites, grid_.size());
-    maps = state_.afterimages(plan_.retina.afterimages, visibility_, region);
-    if (maps.gain_excess.empty()) {  // the frame sees no site
+    const std::optional<cv::Rect> region = read_region(sites, grid_.size());
+    if (!region) {  // the frame sees no site
       out = tone_mapped;
+      resting_ = whole_grid_rests();
       return false;
     }
+    maps = state_.afterimages(plan_.retina.afterimages, visibility_, *region);
     gain = grid_.draw_at(maps.gain_excess, sites, none);
     bleach = grid_.draw_at(maps.bleach, sites, none);
+    // At rest only if the whole grid is: an afterimage out of view now may
+    // come into view without the stimulus changing. Checked over the whole
+    // grid only when the part in view is at rest.
+    if (maps.largest <= kRestTolerance && *region != cv::Rect(cv::Point(0, 0), grid_.size())) {
+      retina::composite_afterimages(tone_mapped, gain, bleach, out);
+      resting_ = whole_grid_rests();
+      return true;
+    }
   }
   retina::composite_afterimages(tone_mapped, gain, bleach, out);
   resting_ = maps.largest <= kRestTolerance;
   return true;
+}
+
+bool RetinaStage::whole_grid_rests() const {
+  return state_.afterimages(plan_.retina.afterimages, visibility_).largest <= kRestTolerance;
 }
 
 std::vector<cv::Mat> RetinaStage::save(bool& started) const {

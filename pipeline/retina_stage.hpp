@@ -62,6 +62,9 @@ class RetinaStage {
   // The cone stimulus averaged down to about the grid's resolution.
   // The frame at the grid's resolution (sites per pixel below 1), where the
   // stimulus is sampled and the afterimages are drawn.
+  // Whether no site of the grid departs from rest by more than
+  // kRestTolerance (the afterimage maps of the whole grid).
+  bool whole_grid_rests() const;
   cv::Size reduced_frame_size(cv::Size frame) const;
   cv::Mat reduce_frame(const cv::Mat& cones) const;
   // The grid's stimulus for the gaze at plane point (plane_x, plane_y).

@@ -106,6 +106,9 @@ ParamSet run_parameters(Settings& s) {
                  "ocular pigmentation p of CIE 146 (0 very dark, 0.5 brown, 1 light, 1.2 very light blue eyes); "
                  "cie model only",
                  optics, &s.viewer.pigmentation, 0, 1.2));
+  set.add(flag("lens-yellowing",
+               "the lens absorbs short wavelengths by --viewer-age (Pokorny et al. 1987), against a 32-year-old's",
+               optics, &s.lens_yellowing));
   set.add(flag("viewer-glasses", "the viewer wears (myopic) glasses: more and longer flare lines", optics,
                &s.viewer.glasses));
   set.add(number("viewer-haze", "", "share of the unscattered light that haze or fog turns into wide bloom", optics,

@@ -8,6 +8,7 @@
 #include <pybind11/stl.h>
 
 #include <eyestream/eye.hpp>
+#include <mutex>
 #include <sstream>
 
 #include "pipeline/parameter.hpp"
@@ -60,22 +61,30 @@ py::array to_numpy(const cv::Mat& m) {
   }
 }
 
-cv::Mat from_numpy(const py::array& a) {
+bool is_float32(const py::array& a) { return a.dtype().kind() == 'f' && a.dtype().itemsize() == 4; }
+bool is_float64(const py::array& a) { return a.dtype().kind() == 'f' && a.dtype().itemsize() == 8; }
+
+cv::Mat from_numpy(const py::handle& object) {
+  const py::array a = py::array::ensure(object);
+  if (!a) throw py::type_error("a state matrix is a numpy array");
   if (a.ndim() != 3) throw py::value_error("a state matrix is rows x cols x channels");
   const auto rows = int(a.shape(0)), cols = int(a.shape(1)), channels = int(a.shape(2));
   int depth = -1;
-  if (a.dtype().is(py::dtype::of<float>())) depth = CV_32F;
-  if (a.dtype().is(py::dtype::of<double>())) depth = CV_64F;
+  if (is_float32(a)) depth = CV_32F;
+  if (is_float64(a)) depth = CV_64F;
   if (depth < 0 || channels < 1 || channels > 4) throw py::value_error("a state matrix is float32 or float64 with 1-4 channels");
   if (rows == 0 || cols == 0) return cv::Mat();
   const py::array packed = py::array::ensure(a, py::array::c_style);
   return cv::Mat(rows, cols, CV_MAKETYPE(depth, channels), const_cast<void*>(packed.data())).clone();
 }
 
-// The eye and what its last frame gave.
+// The eye and what its last frame gave. One frame at a time: the GIL is
+// released while a frame is processed, so another thread may call in; the
+// lock keeps each eye's calls one after another.
 struct PyEye {
   Eye eye;
   eyestream::Frame last;
+  mutable std::mutex busy;
 
   py::array process(const py::array& frame, const py::object& gaze) {
     const int w = eye.width(), h = eye.height();
@@ -87,22 +96,26 @@ struct PyEye {
     const std::vector<eyestream::Gaze> samples = gaze_samples(gaze);
     // float32 with each row's pixels packed is read where it lies; anything
     // else is converted first.
-    const bool packed = frame.dtype().is(py::dtype::of<float>()) && frame.strides(2) == 4 && frame.strides(1) == 12 &&
+    const bool packed = is_float32(frame) && frame.strides(2) == 4 && frame.strides(1) == 12 &&
                         frame.strides(0) >= 12 * w;
     const py::array held =
         packed ? frame : py::array(py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(frame));
     if (!held) throw py::type_error("frame: not convertible to float32");
     const auto* pixels = static_cast<const float*>(held.data());
     const size_t stride = size_t(held.strides(0));
+    eyestream::Frame out;
     {
       py::gil_scoped_release unlocked;
+      const std::lock_guard<std::mutex> one_at_a_time(busy);
       last = eye.process(pixels, stride, samples);
+      out = last;
     }
-    return to_numpy(last.linear);
+    return to_numpy(out.linear);
   }
 
   py::dict report() const {
-    const eyestream::FrameReport& r = last.report;
+    const std::lock_guard<std::mutex> one_at_a_time(busy);
+    const eyestream::FrameReport r = last.report;
     py::dict d;
     d["adaptation_cd_m2"] = r.adaptation_cd_m2;
     d["pupil_mm"] = r.pupil_mm;
@@ -119,7 +132,13 @@ struct PyEye {
     return d;
   }
 
+  py::array code() const {
+    const std::lock_guard<std::mutex> one_at_a_time(busy);
+    return to_numpy(last.code);
+  }
+
   py::tuple state() const {
+    const std::lock_guard<std::mutex> one_at_a_time(busy);
     const Eye::State s = eye.state();
     py::list mats;
     for (const cv::Mat& m : s.mats) mats.append(m.empty() ? py::array(py::dtype::of<float>(), std::vector<py::ssize_t>{0, 0, 3}) : to_numpy(m));
@@ -129,8 +148,9 @@ struct PyEye {
   void restore(const py::tuple& t) {
     if (py::len(t) != 2) throw eyestream::Error("the eye's state is malformed", 2);
     Eye::State s;
-    for (const py::handle m : t[0].cast<py::list>()) s.mats.push_back(from_numpy(py::reinterpret_borrow<py::array>(m)));
+    for (const py::handle m : t[0].cast<py::list>()) s.mats.push_back(from_numpy(m));
     s.numbers = t[1].cast<std::vector<double>>();
+    const std::lock_guard<std::mutex> one_at_a_time(busy);
     eye.restore(s);
   }
 };
@@ -191,7 +211,7 @@ PYBIND11_MODULE(eyestream, m) {
            "frame: HxWx3 linear Rec.709 RGB in cd/m^2 (float32 with packed pixels is read in place, anything\n"
            "else converted). gaze: the samples (t, x, y[, closed[, lost]]) inside the frame's interval\n"
            "[n / fps, (n + 1) / fps), in seconds and frame pixels; without samples the last gaze holds.")
-      .def_property_readonly("code", [](const PyEye& e) { return to_numpy(e.last.code); },
+      .def_property_readonly("code", &PyEye::code,
                              "the last frame encoded for the display and dithered (uint8 HxWx3; uint16 with png_bits=16)")
       .def_property_readonly("report", &PyEye::report, "what happened to the last frame (a dict)")
       .def("state", &PyEye::state, "the eye's state between frames (a copy), for restore()")

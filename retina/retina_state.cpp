@@ -166,12 +166,12 @@ void RetinaState::soften(double variance_sites2) {
 }
 
 AfterimageMaps RetinaState::afterimages(const AfterimageOptions& options, const cv::Mat& visibility,
-                                        cv::Rect region) const {
+                                        std::optional<cv::Rect> within) const {
   CV_Assert(!response_.empty() && visibility.size() == bleached_.size() && visibility.type() == CV_32F);
   const cv::Rect grid(cv::Point(0, 0), bleached_.size());
-  region = region.empty() ? grid : region & grid;
+  const cv::Rect region = within ? *within : grid;
+  CV_Assert(!region.empty() && (region & grid) == region);
   AfterimageMaps maps;
-  if (region.empty()) return maps;
   if (is_double(bleached_))
     afterimage_sites<double>(params_, c_max_, options, bleached_(region), deficit_(region), bleached_rest_(region),
                              response_(region), visibility(region), maps);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <opencv2/core.hpp>
+#include <optional>
 #include <vector>
 
 #include "retina/photoreceptor.hpp"
@@ -51,11 +52,11 @@ class RetinaState {
 
   // The afterimage terms for the last stimulus, weighted by `visibility`
   // (CV_32F, grid-sized, in [0, 1]: the fall-off away from the fovea).
-  // Only the sites in `region` (default: the whole grid) are computed and
-  // the maps are that region's size (site (x, y) of the grid at
+  // With a region (inside the grid, not empty), only its sites are
+  // computed and the maps are its size (site (x, y) of the grid at
   // (x - region.x, y - region.y)): the frame sees about a quarter of the grid.
   AfterimageMaps afterimages(const AfterimageOptions& options, const cv::Mat& visibility,
-                             cv::Rect region = cv::Rect()) const;
+                             std::optional<cv::Rect> region = std::nullopt) const;
 
   const cv::Mat& bleached() const { return bleached_; }  // B, LMS
   const cv::Mat& deficit() const { return deficit_; }    // D = C_max - C, LMS

@@ -8,6 +8,7 @@ frames must equal them byte for byte.
 import os
 import struct
 import subprocess
+import sys
 import tempfile
 import threading
 import unittest
@@ -131,21 +132,56 @@ class Frames(unittest.TestCase):
     def test_the_gil_is_free_while_a_frame_is_processed(self):
         eye = eyestream.Eye(640, 360, FPS, quality="reference")
         frame = np.full((360, 640, 3), 0.02, np.float32)  # mesopic: every stage works
+        eye.process(frame)  # the first frame sets up
         ticks, done = [0], threading.Event()
 
         def count():
             while not done.is_set():
                 ticks[0] += 1
 
-        eye.process(frame)  # the first frame sets up
-        counter = threading.Thread(target=count)
-        counter.start()
-        before = ticks[0]
-        eye.process(frame)
-        during = ticks[0] - before
-        done.set()
-        counter.join()
+        # No forced switches within a second: the counter runs inside the
+        # window only if process() lets go of the GIL (held, it would count
+        # nothing until the window had closed).
+        interval = sys.getswitchinterval()
+        sys.setswitchinterval(1.0)
+        try:
+            counter = threading.Thread(target=count)
+            counter.start()
+            before = ticks[0]
+            eye.process(frame)
+            during = ticks[0] - before
+        finally:
+            done.set()
+            counter.join()
+            sys.setswitchinterval(interval)
         self.assertGreater(during, 1000, "Python ran beside the frame")
+
+    def test_one_eye_from_two_threads_gives_the_frames_of_one(self):
+        # Calls into one eye wait for each other: two threads feeding it
+        # frames in turn give what one thread gives.
+        log = gaze_log()
+        alone, shared = eyestream.Eye(W, H, FPS), eyestream.Eye(W, H, FPS)
+        expected = [alone.process(scene(n), samples_of_frame(log, n)).copy() for n in range(FRAMES)]
+        got, turn = [None] * FRAMES, threading.Condition()
+        state = {"next": 0}
+
+        def feed(parity):
+            for n in range(parity, FRAMES, 2):
+                with turn:
+                    turn.wait_for(lambda: state["next"] == n)
+                got[n] = shared.process(scene(n), samples_of_frame(log, n)).copy()
+                _ = shared.report, shared.code  # read while the other thread may be processing
+                with turn:
+                    state["next"] += 1
+                    turn.notify_all()
+
+        threads = [threading.Thread(target=feed, args=(p,)) for p in (0, 1)]
+        for t in threads:
+            t.start()
+        for t in threads:
+            t.join()
+        for n in range(FRAMES):
+            self.assertTrue(np.array_equal(expected[n], got[n]), f"frame {n}")
 
 
 class StateAndErrors(unittest.TestCase):
@@ -161,6 +197,19 @@ class StateAndErrors(unittest.TestCase):
             a = first.process(scene(n), samples_of_frame(log, n))
             b = second.process(scene(n), samples_of_frame(log, n))
             self.assertTrue(np.array_equal(a, b), f"frame {n}")
+
+    def test_a_pickled_state_restores_and_a_malformed_one_is_refused(self):
+        import pickle
+        first = eyestream.Eye(W, H, FPS)
+        for n in range(3):
+            first.process(scene(n), [(n / FPS, 30.0, 20.0)])
+        saved = pickle.loads(pickle.dumps(first.state()))
+        second = eyestream.Eye(W, H, FPS)
+        second.restore(saved)
+        self.assertTrue(np.array_equal(first.process(scene(3)), second.process(scene(3))))
+        for bad in ([[1.0, 2.0]], "text", None):  # a list, a string, nothing: refused, never read as an array
+            with self.assertRaises((TypeError, ValueError)):
+                second.restore(([bad] + list(saved[0][1:]), saved[1]))
 
     def test_errors_carry_the_command_lines_message_and_exit_code(self):
         with self.assertRaises(eyestream.Error) as caught:
