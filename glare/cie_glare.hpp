@@ -1,10 +1,10 @@
 // The CIE General Disability Glare equation (CIE 146:2002, from Vos and van
-// den Berg; MODEL.md 1.2): the veiling luminance a point source of
+// den Berg): the veiling luminance a point source of
 // illuminance E at the eye lays at angle t from it,
 //   L_veil / E = 10/t^3 + (5/t^2 + 0.1 p/t) (1 + (A/62.5)^4) + 0.0025 p
 // per steradian, t in degrees, valid from 0.1 to 100 deg, for age A and
 // ocular pigmentation p. The formula here is checked against its published
-// restatements (MODEL.md 1.2 and Vos, Clin. Exp. Optom. 86:363, 2003, as
+// restatements (Vos, Clin. Exp. Optom. 86:363, 2003, as
 // quoted); the CIE report's own text was not available to check it against.
 #pragma once
 

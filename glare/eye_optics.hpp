@@ -1,6 +1,6 @@
 // The viewer's optics as the glare stage uses them: which PSF model, the
 // shapes of its components, their weights at an adaptation level, and the
-// pupil (MODEL.md 1.1-1.3). One object built per sequence; the kernels
+// pupil (docs/model.md). One object built per sequence; the kernels
 // (psf_kernel.hpp) are built from it once, and each frame only re-weights.
 #pragma once
 

@@ -1,5 +1,5 @@
 // Glare convolution by FFT (FFTW, double precision), zero-padded so nothing
-// wraps around (MODEL.md 1.3). The spectra of the component kernels are
+// wraps around (docs/model.md). The spectra of the component kernels are
 // computed once; each frame combines them with its weights.
 //
 // Double, not single precision: FFT rounding spreads over the whole frame

@@ -1,5 +1,5 @@
 // Flare lines: the fine radial streaks of the ciliary corona and of the
-// lenticular halo (Spencer et al. 1995 sec. 3.2; MODEL.md 1.3). A random pattern of
+// lenticular halo (Spencer et al. 1995 sec. 3.2). A random pattern of
 // thin radial lines is multiplied into a PSF component and then scaled ring
 // by ring (1 px rings about the centre) so that each ring keeps the energy
 // it had: the streaks add detail without changing the PSF's radial profile

@@ -1,10 +1,10 @@
 // The eye's PSF on the pixel grid: one kernel per PSF component, each
 // integrated over every pixel's footprint (Spencer et al. 1995 sec. 3.2, Yoshida et al. 2008;
-// MODEL.md 1.3). The frame's kernel is the weighted sum of the components
+// docs/model.md). The frame's kernel is the weighted sum of the components
 // (psf_weights.hpp), so any weights (age, adaptation regime, pupil) combine
 // without rebuilding anything.
 //
-// Departure from MODEL.md 1.3: the kernels are not renormalised to unit sum
+// Departure from the model as specified (docs/model.md): the kernels are not renormalised to unit sum
 // after truncation to the frame's reach. Each holds the PSF's own energy
 // within that reach (the components have unit volume over the hemisphere,
 // see vos_psf.hpp), and light scattered farther leaves the frame. Renor-

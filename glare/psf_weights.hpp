@@ -1,5 +1,5 @@
 // The weights of the Vos components f0..f3 for a viewer at an adaptation
-// level (Spencer et al. 1995 eqs. 9-10; MODEL.md 1.1-1.2).
+// level (Spencer et al. 1995 eqs. 9-10).
 #pragma once
 
 #include "glare/viewer.hpp"
@@ -16,7 +16,7 @@ struct PsfWeights {
 //   Ps = 0.282 f0 + 0.478 f1 + 0.207 f2 + 0.033 f3
 // blended piecewise-linearly in log adaptation luminance: Ps at and below
 // 0.01 cd/m^2, Pm at the log-middle of the mesopic range (0.17 cd/m^2), Pp
-// at and above 3 cd/m^2, so glare never pops between frames (MODEL.md 1.1).
+// at and above 3 cd/m^2, so glare never pops between frames (docs/model.md).
 // The halo needs a pupil wider than about 3 mm (the lens fibres sit behind
 // the iris otherwise): its weight is ramped by smoothstep((D - 2.5 mm) /
 // 1 mm), and what it loses goes back to the core. Then the age term moves

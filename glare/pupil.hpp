@@ -1,4 +1,4 @@
-// Pupil diameter from the adapting luminance (MODEL.md 1.2).
+// Pupil diameter from the adapting luminance (docs/model.md).
 #pragma once
 
 #include "glare/viewer.hpp"

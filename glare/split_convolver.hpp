@@ -1,5 +1,5 @@
 // The split glare engine: the PSF's sharp centre at full resolution, its
-// smoother parts at reduced resolutions (MODEL.md 1.3). Level l runs at a
+// smoother parts at reduced resolutions (docs/model.md). Level l runs at a
 // reduction f_l (1, then `factor`, then 4 factor); with the windows
 // w_l(r) = 1 within R_l / 2 pixels of the source, falling linearly to 0 at
 // R_l, level l holds K (w_l - w_(l-1)), integrated over its f_l x f_l

@@ -14,7 +14,7 @@ namespace eyestream::glare {
 // cd/m^2) more than exclusion_px away: sum over p of L(p) K(point - p),
 // with K the kernel for weights `w` (green channel's halo). For a small
 // source of illuminance E at the eye and angle t, this is E P(t), P the
-// PSF per steradian (Spencer et al. 1995; MODEL.md 1.1).
+// PSF per steradian (Spencer et al. 1995).
 double veiling_luminance(const cv::Mat& luminance, const ComponentKernels& k, const PsfWeights& w, double x, double y,
                          double exclusion_px);
 

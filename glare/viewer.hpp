@@ -1,4 +1,4 @@
-// The viewer: who is looking, in one place (MODEL.md 1.2). Everything the
+// The viewer: who is looking, in one place (docs/model.md). Everything the
 // eye's optics depend on that is not the scene: age, eye pigmentation,
 // glasses, haze, how the pupil is modelled, and the seed of the flare-line
 // pattern of this viewer's lens.

@@ -1,4 +1,4 @@
-// `eyestream curves`: a picture of the tone-curve family (MODEL.md 2.1 asks
+// `eyestream curves`: a picture of the tone-curve family (docs/model.md asks
 // for one), drawn with OpenCV.
 #pragma once
 

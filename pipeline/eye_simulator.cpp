@@ -58,7 +58,7 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
   };
   // A sequence (or a chunk) starts adapted to its scene, even mid-blink:
   // the viewer was looking at it before. Optics first: the retina sees the
-  // glare (MODEL.md 1), through the adaptation and the pupil at the start of
+  // glare (docs/model.md), through the adaptation and the pupil at the start of
   // the interval (on the first frame, the scene's target).
   const GazeSegment& first = segments.front();
   const double optics_log =

@@ -1,5 +1,5 @@
 // The gaze over time as piecewise-constant segments, cut at every gaze
-// sample, so the eye model can sub-step inside a frame interval (MODEL.md 4).
+// sample, so the eye model can sub-step inside a frame interval (docs/model.md).
 #pragma once
 
 #include <vector>

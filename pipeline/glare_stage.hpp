@@ -1,5 +1,5 @@
 // The eye's optics: turns the scene into the retinal image the retina sees
-// (Spencer et al. 1995, Yoshida et al. 2008; MODEL.md 1). Bright veils then also adapt and bleach.
+// (Spencer et al. 1995, Yoshida et al. 2008). Bright veils then also adapt and bleach.
 #pragma once
 
 #include <memory>

@@ -1,6 +1,6 @@
 // One declaration per parameter (name, unit, default, range, help), in the
 // manner of libavfilter's option tables: the command line, the JSON config
-// file, --help and range checking all come from it (DESIGN.md).
+// file, --help and range checking all come from it.
 #pragma once
 
 #include <cstdint>

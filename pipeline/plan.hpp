@@ -1,5 +1,5 @@
 // Settings compiled once per sequence into what every frame runs with
-// (the OpenColorIO Config -> Processor idea, DESIGN.md).
+// (the OpenColorIO Config -> Processor idea).
 #pragma once
 
 #include <optional>

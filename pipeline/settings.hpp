@@ -45,7 +45,7 @@ struct Settings {
   // Retina.
   retina::AdaptationParams adaptation;
   retina::ToneCurveParams tone;
-  double adaptation_patch_deg = 1.5;  // side of the square patch around the gaze (MODEL.md 2.1: 1-2 deg)
+  double adaptation_patch_deg = 1.5;  // side of the square patch around the gaze (docs/model.md: 1-2 deg)
   // What lies beyond the frame (seen by retina sites looking outside it,
   // counted in the adaptation patch, scattered in by the glare): unset, the
   // world continues at the geometric mean luminance of the frame's outer
@@ -66,7 +66,7 @@ struct Settings {
   int glare_tail_factor = 4;          // the split engine's reduction of the tail
   double glare_resolution = 1.0;      // the convolution's px/deg over the frame's (the light kept in a pixel stays sharp)
   std::string glare_mode = "full";    // full: the eye, everything through the PSF; excess: the light above the display peak
-  double display_peak_cd_m2 = 100.0;  // L_dmax (MODEL.md 0)
+  double display_peak_cd_m2 = 100.0;  // L_dmax (docs/model.md)
 
   // Retina state (per-cone bleaching and calcium on a retina-fixed grid).
   retina::PhotoreceptorParams receptors;

@@ -1,4 +1,4 @@
-// Visual degrees per pixel from the viewing condition (MODEL.md 0).
+// Visual degrees per pixel from the viewing condition (docs/model.md).
 #pragma once
 
 #include <string>
@@ -7,7 +7,7 @@ namespace eyestream::pipeline {
 
 struct ViewingGeometry {
   double fov_deg = 0.0;             // horizontal field of view of the frame; 0: derive from the display
-  double display_diagonal_m = 0.6;  // the frame fills the display (MODEL.md 0, Jacobs et al. 2015's condition)
+  double display_diagonal_m = 0.6;  // the frame fills the display (Jacobs et al. 2015's condition)
   double viewing_distance_m = 1.0;
   // How the frame maps to directions (frame_projection.hpp): rectilinear
   // (renderers, simulators, a flat display) or equidistant.

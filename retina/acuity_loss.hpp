@@ -1,5 +1,5 @@
 // Stochastic loss of spatial acuity in low light (Jacobs et al. 2015 sec. 2.3.3, eqs.
-// 14-15; MODEL.md 3).
+// 14-15).
 #pragma once
 
 #include <cstdint>

@@ -1,5 +1,5 @@
 // Global adaptation: the log luminance the viewer is adapted to moves toward
-// a target at fixed rates (Jacobs et al. 2015 eq. 3; MODEL.md 2.1).
+// a target at fixed rates (Jacobs et al. 2015 eq. 3).
 #pragma once
 
 namespace eyestream::retina {

@@ -1,5 +1,5 @@
 // Puts the afterimage terms onto the tone-mapped frame (Jacobs et al. 2015 eq. 12;
-// MODEL.md 2.4).
+// docs/model.md).
 #pragma once
 
 #include <opencv2/core.hpp>

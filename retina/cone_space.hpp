@@ -1,5 +1,5 @@
 // Linear Rec.709 RGB <-> LMS cone space, and the afterimage colour matrix H
-// (Jacobs et al. 2015 App. A; MODEL.md 2.2 and 2.4).
+// (Jacobs et al. 2015 App. A).
 #pragma once
 
 #include <Eigen/Core>

@@ -27,7 +27,7 @@ void encode_rows(const cv::Mat& linear, std::int64_t frame, const EncodingParams
           const float v = gamma(j) * max_code;
           float q;
           if (p.dither) {
-            // MODEL.md 3: round up with probability equal to the fractional part.
+            // docs/model.md: round up with probability equal to the fractional part.
             const float lo = std::floor(v);
             q = lo + ((v - lo) > hash_uniform3(key, c) ? 1.0f : 0.0f);
           } else {

@@ -1,5 +1,5 @@
 // Display encoding: gamma, clipping and temporally dithered quantisation
-// (Jacobs et al. 2015 sec. 2.4 and App. A; MODEL.md 2.1 and 3).
+// (Jacobs et al. 2015 sec. 2.4 and App. A).
 #pragma once
 
 #include <cstdint>

@@ -5,7 +5,7 @@
 
 namespace eyestream::retina {
 
-// Photopic luminance weights of Rec.709 RGB (MODEL.md 0; Jacobs et al. 2015 App. A wP).
+// Photopic luminance weights of Rec.709 RGB (Jacobs et al. 2015 App. A wP).
 inline constexpr float kPhotopicR = 0.2126f, kPhotopicG = 0.7152f, kPhotopicB = 0.0722f;
 
 inline float photopic_luminance(const cv::Vec3f& rgb) {

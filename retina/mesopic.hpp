@@ -1,5 +1,5 @@
 // Mesopic colour: the Purkinje shift and the hue shift toward a dull purple
-// (Jacobs et al. 2015 sec. 2.3, eq. 13 and App. A; MODEL.md 3).
+// (Jacobs et al. 2015 sec. 2.3, eq. 13 and App. A).
 #pragma once
 
 #include <opencv2/core.hpp>

@@ -1,5 +1,5 @@
 // One cone's photopigment bleaching and calcium state, stepped exactly
-// (Jacobs et al. 2015 eqs. 4-6 and 8-12; MODEL.md 2.2-2.4). Header-only so the
+// (Jacobs et al. 2015 eqs. 4-6 and 8-12). Header-only so the
 // per-site loops inline it; templated on float (default) or double
 // (reference precision).
 #pragma once
@@ -16,7 +16,7 @@ struct PhotoreceptorParams {
   double calcium_influx_per_s = 1.0;                 // c1
   double calcium_efflux_per_s = 1.0;                 // c2
   double bleaching_strength = 0.03;                  // j1
-  double adaptation_strength = 0.15;                 // j2, an exponent (MODEL.md 2.4)
+  double adaptation_strength = 0.15;                 // j2, an exponent (docs/model.md)
   // Regularises the gain alpha in the dark limit, as a fraction of C_max
   // (see local_gain).
   double gain_epsilon = 0.01;

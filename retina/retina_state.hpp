@@ -1,6 +1,6 @@
 // Per-site, per-cone photopigment bleaching B and calcium deficit D on the
 // retinal grid, and the afterimage maps they produce (Jacobs et al. 2015 sec. 2.2;
-// MODEL.md 2.2-2.4).
+// docs/model.md).
 #pragma once
 
 #include <opencv2/core.hpp>

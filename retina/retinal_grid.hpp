@@ -1,5 +1,5 @@
 // The grid of retina sites on which photoreceptor state lives: fixed to the
-// retina, centred on the fovea (MODEL.md 0). Each step the scene is sampled
+// retina, centred on the fovea (docs/model.md). Each step the scene is sampled
 // into it at retina = scene - gaze; afterimage maps are drawn back to the
 // display at the current gaze. The state itself is never resampled, so an
 // afterimage neither blurs nor drifts as the gaze moves.

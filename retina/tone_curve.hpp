@@ -1,5 +1,5 @@
 // The Naka-Rushton tone curve parameterised by the adaptation level
-// (Jacobs et al. 2015 eqs. 1-2; MODEL.md 2.1).
+// (Jacobs et al. 2015 eqs. 1-2).
 #pragma once
 
 #include "retina/pow_table.hpp"

@@ -1,4 +1,4 @@
-// The afterimage claims of Jacobs et al. 2015 sec. 2.2 (MODEL.md 2.2-2.4), through the
+// The afterimage claims of Jacobs et al. 2015 sec. 2.2 (docs/model.md), through the
 // whole eye simulator.
 #include <gtest/gtest.h>
 
@@ -167,7 +167,7 @@ TEST(Afterimages, FixatedPatchesLeaveNegativeAndOpponentAfterimages) {
   EXPECT_GT(at_blue[1] / at_blue[2], 1.02) << "yellowish: blue weakened against green";
 }
 
-// MODEL.md 0: afterimages are locked to the retina. After a flash, a gaze
+// docs/model.md: afterimages are locked to the retina. After a flash, a gaze
 // jump of N pixels moves the afterimage N pixels on the display, unsmeared
 // (on an equidistant frame, whose pixels all subtend one angle).
 TEST(Afterimages, AfterimageMovesWithTheGazeWithoutSmearing) {

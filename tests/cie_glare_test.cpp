@@ -1,5 +1,5 @@
 // The cie PSF model: CIE 146:2002's general disability glare equation
-// (MODEL.md 1.2) as the scattered part of the kernel.
+// (docs/model.md) as the scattered part of the kernel.
 #include <gtest/gtest.h>
 
 #include <cmath>

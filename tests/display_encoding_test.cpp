@@ -33,7 +33,7 @@ cv::Mat mean_code(const cv::Mat& linear, int frames, bool dither) {
 }
 
 TEST(DisplayEncoding, DitheredMeanOfManyFramesMatchesTheUnquantisedValue) {
-  // A constant dark ramp, encoded values 0.02 .. 0.083 (MODEL.md 3). Each
+  // A constant dark ramp, encoded values 0.02 .. 0.083 (docs/model.md). Each
   // dithered code is exact +- one step with mean error 0, so the mean of N
   // frames has a standard deviation of at most 0.5/255/sqrt(N): the RMS
   // error over the ramp must stay within 1/255/sqrt(N) and within that

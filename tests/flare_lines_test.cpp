@@ -1,5 +1,5 @@
 // Flare lines (Spencer et al. 1995 sec. 3.2, the lens flare filter tutorial,
-// Matsuda and Ikedo; MODEL.md 1.3): detail
+// Matsuda and Ikedo): detail
 // in the PSF without changing its radial profile or its energy.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// The optics claims of Spencer et al. 1995 and Yoshida et al. 2008 (MODEL.md 1).
+// The optics claims of Spencer et al. 1995 and Yoshida et al. 2008 (docs/model.md).
 #include <gtest/gtest.h>
 
 #include <cmath>

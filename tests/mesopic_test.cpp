@@ -1,4 +1,4 @@
-// The mesopic claims of Jacobs et al. 2015 sec. 2.3 (MODEL.md 3).
+// The mesopic claims of Jacobs et al. 2015 sec. 2.3 (docs/model.md).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// Pupil diameter models (MODEL.md 1.2): Moon-Spencer and Watson-Yellott.
+// Pupil diameter models (docs/model.md): Moon-Spencer and Watson-Yellott.
 #include <gtest/gtest.h>
 
 #include <cmath>

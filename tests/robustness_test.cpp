@@ -1,4 +1,4 @@
-// Bad input, extremes and long runs (MODEL.md 5).
+// Bad input, extremes and long runs (docs/model.md).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -7,7 +7,7 @@
 namespace eyestream::pipeline {
 namespace {
 
-// MODEL.md 0: the default condition (0.6 m 16:9 display at 1 m) is about
+// docs/model.md: the default condition (0.6 m 16:9 display at 1 m) is about
 // 29 deg wide. The display is a rectilinear view: at its centre a 1920-px
 // frame has f = 960 / tan(14.65 deg) px per radian, 64.1 px/deg; across the
 // whole width it averages 1920 / 29.3 = 65.5.

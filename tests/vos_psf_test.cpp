@@ -5,7 +5,7 @@
 namespace eyestream::glare {
 namespace {
 
-// MODEL.md 1.1: each Vos component is a unit-volume density over the hemisphere.
+// docs/model.md: each Vos component is a unit-volume density over the hemisphere.
 TEST(VosPsf, EachComponentIntegratesToOneOverTheHemisphere) {
   EXPECT_NEAR(hemisphere_integral(vos_f0), 1.0, 0.01);
   EXPECT_NEAR(hemisphere_integral(vos_f1), 1.0, 0.01);
