@@ -7,7 +7,6 @@
 #include <cmath>
 #include <fstream>
 #include <map>
-#include <sstream>
 
 #include "io/exr_file.hpp"
 #include "io/exr_sequence_source.hpp"
@@ -89,16 +88,12 @@ std::vector<std::map<std::string, std::string>> read_csv(const std::string& path
   std::ifstream in(path);
   std::string line;
   std::getline(in, line);
-  std::vector<std::string> names;
-  std::stringstream header(line);
-  for (std::string f; std::getline(header, f, ',');) names.push_back(f);
+  const std::vector<std::string> names = test::csv_fields(line);
   std::vector<std::map<std::string, std::string>> rows;
   while (std::getline(in, line)) {
-    std::stringstream row(line);
-    std::map<std::string, std::string> r;
-    std::string f;
-    for (size_t i = 0; i < names.size() && std::getline(row, f, ','); ++i) r[names[i]] = f;
-    rows.push_back(r);
+    const std::vector<std::string> fields = test::csv_fields(line);
+    std::map<std::string, std::string>& r = rows.emplace_back();
+    for (size_t i = 0; i < names.size() && i < fields.size(); ++i) r[names[i]] = fields[i];
   }
   return rows;
 }
