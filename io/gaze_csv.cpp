@@ -28,6 +28,7 @@ std::vector<GazeSample> parse_gaze_csv(const std::string& text, const std::strin
   const DelimitedTable table = parse_delimited(text, ',');
   if (table.header.empty()) throw InputError(name + ": empty gaze log (expected a header t,x,y[,event])");
   const int ct = table.column("t"), cx = table.column("x"), cy = table.column("y"), ce = table.column("event");
+  const int cp = table.column("pupil_mm");  // optional: the recorded pupil diameter
   if (ct < 0 || cx < 0 || cy < 0)
     throw InputError(name + ":" + std::to_string(table.header_line) +
                      ": header must name the columns t,x,y (and optionally event)");
@@ -44,6 +45,8 @@ std::vector<GazeSample> parse_gaze_csv(const std::string& text, const std::strin
     const bool has_x = parse_number(f[size_t(cx)], s.x), has_y = parse_number(f[size_t(cy)], s.y);
     if (s.state == EyeState::kOpen && !(has_x && has_y))
       throw InputError(where + ": position '" + f[size_t(cx)] + "," + f[size_t(cy)] + "' is not a pair of numbers");
+    if (cp >= 0 && cp < int(f.size()) && !f[size_t(cp)].empty() && !parse_number(f[size_t(cp)], s.pupil_mm))
+      throw InputError(where + ": pupil_mm '" + f[size_t(cp)] + "' is not a number");
     if (units == GazeUnits::kNormalised) {
       s.x *= frame_width;
       s.y *= frame_height;

@@ -1,5 +1,6 @@
 // SR Research EyeLink ASC files (edf2asc): sample lines "time x y pupil"
-// (binocular: "time xl yl pl xr yr pr"), "." for missing values, SBLINK /
+// (binocular: "time xl yl pl xr yr pr"; the pupil in the tracker's own
+// units, read when a scale to mm is given), "." for missing values, SBLINK /
 // EBLINK events, screen size from the DISPLAY_COORDS message; times in ms
 // (fractional at 2 kHz). Real files carry calibration blocks whose values
 // continue on indented lines: samples are read only from lines that start
@@ -87,6 +88,12 @@ std::vector<GazeSample> parse_eyelink(const std::string& text, const std::string
     const bool both = binocular || (!blocks && w.size() >= 7);
     const bool right = both && w.size() >= 6 && parse_number(w[4], xr) && parse_number(w[5], yr);
     const bool use_left = left && (!both || o.eye != "right"), use_right = right && o.eye != "left";
+    // The pupil, of the eye or eyes the gaze is taken from.
+    double pl = 0.0, pr = 0.0;
+    const bool pupil_left = use_left && w.size() >= 4 && parse_number(w[3], pl) && pl > 0.0;
+    const bool pupil_right = use_right && w.size() >= 7 && parse_number(w[6], pr) && pr > 0.0;
+    if (o.pupil_scale_mm > 0.0 && (pupil_left || pupil_right))
+      s.pupil_mm = o.pupil_scale_mm * (pupil_left && pupil_right ? 0.5 * (pl + pr) : pupil_left ? pl : pr);
     if (use_left && use_right)
       x = 0.5 * (xl + xr), y = 0.5 * (yl + yr);
     else if (use_left)

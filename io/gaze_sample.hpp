@@ -1,6 +1,8 @@
 // The native gaze model every gaze format maps to.
 #pragma once
 
+#include <limits>
+
 namespace eyestream::io {
 
 enum class EyeState {
@@ -14,6 +16,8 @@ struct GazeSample {
   double t_s = 0.0;         // seconds from the first frame
   double x = 0.0, y = 0.0;  // input-frame pixels, origin top-left, pixel centres at +0.5
   EyeState state = EyeState::kOpen;
+  // The pupil diameter the tracker recorded (mm); NaN when it has none.
+  double pupil_mm = std::numeric_limits<double>::quiet_NaN();
 };
 
 }  // namespace eyestream::io

@@ -1,9 +1,11 @@
 // Tobii Pro Lab TSV exports: Recording timestamp (ms or us, per the
 // header; without a unit, from the samples' spacing), Gaze point X/Y in
-// pixels of the recorded media, Validity left/right; decimal commas
-// accepted; one recording of several (Recording name).
+// pixels of the recorded media, Validity left/right, Pupil diameter
+// left/right (mm, their mean); decimal commas accepted; one recording of
+// several (Recording name).
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "io/delimited_table.hpp"
 #include "io/error.hpp"
@@ -53,6 +55,7 @@ std::vector<GazeSample> parse_tobii(const std::string& text, const std::string& 
   }
   const double to_s = micro ? 1e-6 : 1e-3;
   const int cl = t.column("Validity left"), cr = t.column("Validity right");
+  const int pl = t.column("Pupil diameter left", true), pr = t.column("Pupil diameter right", true);
   const double sx = o.source_width > 0 ? double(o.frame_width) / o.source_width : 1.0;
   const double sy = o.source_height > 0 ? double(o.frame_height) / o.source_height : 1.0;
   auto invalid = [&](const std::vector<std::string>& row, int c) {
@@ -70,6 +73,13 @@ std::vector<GazeSample> parse_tobii(const std::string& text, const std::string& 
     const bool position = cx < int(row.size()) && cy < int(row.size()) && parse_number(row[size_t(cx)], x, true) &&
                           parse_number(row[size_t(cy)], y, true);
     place(s, position && !(invalid(row, cl) && invalid(row, cr)), x, y, sx, sy);
+    // The pupil: the mean of the valid eyes' diameters.
+    double sum = 0.0, d;
+    int eyes = 0;
+    for (const auto& [c, validity] : {std::pair{pl, cl}, std::pair{pr, cr}})
+      if (c >= 0 && c < int(row.size()) && !invalid(row, validity) && parse_number(row[size_t(c)], d, true) && d > 0.0)
+        sum += d, ++eyes;
+    if (eyes > 0) s.pupil_mm = sum / eyes;
     out.push_back(s);
   }
   return out;

@@ -64,7 +64,12 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
   const double optics_log =
       adaptation_ ? *adaptation_ : patch_log_mean(scene_field, first.x, first.y, surround);
   if (!pupil_) pupil_ = pupil_target(false);
-  const cv::Mat retinal = glare_ ? glare_->apply(scene, optics_log, surround, *pupil_, &active.glare, &active.glare_reused) : scene;
+  // The optics' pupil: the recorded one when asked for and the log has
+  // one for this frame, else the model's (which goes on either way).
+  const double recorded = plan_.pupil_from_gaze ? first.recorded_pupil_mm : NAN;
+  const double optics_pupil = std::isfinite(recorded) ? recorded : *pupil_;
+  const cv::Mat retinal =
+      glare_ ? glare_->apply(scene, optics_log, surround, optics_pupil, &active.glare, &active.glare_reused) : scene;
   times.glare_ms = lap_ms(clock);
 
   // Global adaptation: one exact step per gaze segment (Jacobs et al. 2015
@@ -111,34 +116,39 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
     report->nonfinite_pixels = nonfinite;
     report->active = active;
     report->times = times;
-    if (plan_.report) fill_glare_report(scene, last, target_mask, *report);
+    if (plan_.report) fill_glare_report(scene, last, target_mask, recorded, *report);
   }
   return out;
 }
 
 void EyeSimulator::fill_glare_report(const cv::Mat& scene, const GazeSegment& gaze, const cv::Mat& target_mask,
-                                     FrameReport& r) const {
+                                     double recorded_pupil_mm, FrameReport& r) const {
   cv::Mat luminance(scene.size(), CV_32F);
   scene.forEach<cv::Vec3f>(
       [&](const cv::Vec3f& p, const int* pos) { luminance.at<float>(pos[0], pos[1]) = retina::photopic_luminance(p); });
   double peak;
   cv::minMaxLoc(luminance, nullptr, &peak);
   r.peak_cd_m2 = peak;
-  r.pupil_mm = *pupil_;
+  // The pupil the optics take (the recorded one when there is one), and
+  // the model's beside it.
+  const double pupil = std::isfinite(recorded_pupil_mm) ? recorded_pupil_mm : *pupil_;
+  r.pupil_mm = pupil;
+  r.pupil_model_mm = *pupil_;
+  r.pupil_recorded_mm = std::isfinite(recorded_pupil_mm) ? recorded_pupil_mm : -1.0;
   const std::optional<TargetLuminance> target = measure_target(luminance, target_mask);
   if (target) {
     r.target_cd_m2 = target->target_cd_m2;
     r.background_cd_m2 = target->background_cd_m2;
   }
   if (!glare_ || gaze.eye_closed) return;
-  const std::optional<double> veil = glare_->veil_at(luminance, *adaptation_, *pupil_, gaze.x, gaze.y, plan_.veil_exclusion_deg);
+  const std::optional<double> veil = glare_->veil_at(luminance, *adaptation_, pupil, gaze.x, gaze.y, plan_.veil_exclusion_deg);
   if (veil) {
     r.veil_cd_m2 = *veil;
     r.ti_percent = glare::threshold_increment(*veil, std::pow(10.0, *adaptation_));
   }
   if (target) {
     const std::optional<double> target_veil =
-        glare_->veil_at(luminance, *adaptation_, *pupil_, target->x, target->y, plan_.veil_exclusion_deg);
+        glare_->veil_at(luminance, *adaptation_, pupil, target->x, target->y, plan_.veil_exclusion_deg);
     if (target_veil) r.target_veil_cd_m2 = *target_veil;
   }
 }

@@ -28,7 +28,9 @@ struct FrameReport {
   StageActivity active;    // which stages worked on this frame (glare: false when nothing exceeded the display peak)
   StageTimes times;        // and how long each took
   // Filled when the plan asks for a report:
-  double pupil_mm = 0.0;     // the pupil at the end of the interval (it follows the field luminance)
+  double pupil_mm = 0.0;     // the optics' pupil: the recorded one (--pupil-from-gaze) or the model's
+  double pupil_model_mm = 0.0;      // the model's, at the end of the interval (it follows the field luminance)
+  double pupil_recorded_mm = -1.0;  // the gaze log's for the frame, bridged across blinks; -1 without one
   double peak_cd_m2 = 0.0;   // brightest scene pixel (photopic luminance)
   double veil_cd_m2 = -1.0;  // veiling luminance at the gaze; -1 without a Vos PSF or with eyes closed
   double ti_percent = -1.0;  // threshold increment at the gaze; -1 when the veil is unknown
@@ -73,8 +75,9 @@ class EyeSimulator {
   const GlareStage* glare() const { return glare_.get(); }
 
  private:
+  // recorded_pupil_mm: the frame's recorded pupil the optics took, or NaN.
   void fill_glare_report(const cv::Mat& scene, const GazeSegment& gaze, const cv::Mat& target_mask,
-                         FrameReport& r) const;
+                         double recorded_pupil_mm, FrameReport& r) const;
   // log10 of the mean luminance over the adaptation patch at frame point (x, y).
   double patch_log_mean(const retina::LuminanceField& field, double x, double y, double surround) const;
 

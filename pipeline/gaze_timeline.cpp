@@ -1,6 +1,7 @@
 #include "pipeline/gaze_timeline.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace eyestream::pipeline {
 
@@ -12,6 +13,8 @@ GazeTimeline::GazeTimeline(const std::vector<io::GazeSample>& samples, double de
       y = s.y;
     }
     held_.push_back({s.t_s, x, y, s.state == io::EyeState::kClosed});
+    if (s.state == io::EyeState::kOpen && std::isfinite(s.pupil_mm) && s.pupil_mm > 0.0)
+      pupils_.push_back({s.t_s, s.pupil_mm});
   }
   if (held_.empty()) held_.push_back({0.0, default_x, default_y, false});
 }
@@ -31,7 +34,28 @@ std::vector<GazeSegment> GazeTimeline::segments(double t0, double t1) const {
     t = end;
     ++k;
   }
+  const double pupil = recorded_pupil_mm(t0, t1).value_or(std::numeric_limits<double>::quiet_NaN());
+  for (GazeSegment& s : out) s.recorded_pupil_mm = pupil;
   return out;
+}
+
+std::optional<double> GazeTimeline::recorded_pupil_mm(double t0, double t1) const {
+  if (pupils_.empty()) return std::nullopt;
+  auto by_time = [](const Pupil& p, double t) { return p.t_s < t; };
+  const auto first = std::lower_bound(pupils_.begin(), pupils_.end(), t0, by_time);
+  const auto last = std::lower_bound(first, pupils_.end(), std::max(t1, t0), by_time);
+  if (first != last) {
+    double sum = 0.0;
+    for (auto p = first; p != last; ++p) sum += p->mm;
+    return sum / double(last - first);
+  }
+  // Bridged: between the samples either side, at the interval's middle.
+  if (first == pupils_.begin()) return first->mm;
+  const Pupil& before = *(first - 1);
+  if (first == pupils_.end()) return before.mm;
+  const double mid = 0.5 * (t0 + std::max(t1, t0));
+  const double w = std::clamp((mid - before.t_s) / (first->t_s - before.t_s), 0.0, 1.0);
+  return before.mm + w * (first->mm - before.mm);
 }
 
 }  // namespace eyestream::pipeline

@@ -53,6 +53,7 @@ Plan compile_plan(const Settings& s, const io::SourceInfo& source) {
   p.glare.model = s.psf_model == "cie" ? glare::PsfModel::cie : glare::PsfModel::vos;
   p.glare.flare_lines = s.flare_lines;
   if (s.lens_yellowing) p.lens_filter = glare::lens_filter_rgb(s.viewer.age_years);
+  p.pupil_from_gaze = s.pupil_from_gaze;
   p.glare.viewer = s.viewer;
   p.glare.viewer.pupil =
       s.pupil_model == "watson-yellott" ? glare::PupilModel::watson_yellott : glare::PupilModel::moon_spencer;
@@ -129,7 +130,8 @@ std::string Plan::describe() const {
     << (surround_from_edge ? "the geometric mean of the frame's outer 1 deg band, frame by frame"
                            : std::to_string(surround_cd_m2) + " cd/m^2")
     << "\n"
-    << "pupil = follows the field luminance, constricting with tau " << pupil.constrict_tau_s
+    << "pupil = " << (pupil_from_gaze ? "as the gaze log recorded it (the model's beside it in the report); " : "")
+    << "follows the field luminance, constricting with tau " << pupil.constrict_tau_s
     << " s, dilating with tau " << pupil.dilate_tau_s << " s\n"
     << "stages = "
     << (glare.enabled ? (glare.full ? "glare (every frame but a uniform field or a still frame under the same optics), "

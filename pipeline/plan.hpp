@@ -54,6 +54,8 @@ struct Plan {
   // The lens's yellowing for the viewer's age (glare/lens_density.hpp),
   // applied to the scene before every stage; unset: the standard observer.
   std::optional<cv::Matx33f> lens_filter;
+  // The optics take the pupil the gaze log recorded, where it has one.
+  bool pupil_from_gaze = false;
   double frames_per_second = 30.0;
   double fov_deg = 0.0;
   // The frame's directions and the angle plane the optics and the retina

@@ -53,7 +53,8 @@ void ReportWriter::add(std::int64_t frame, double time_s, size_t viewer, const F
            field(target, r.background_cd_m2) + "," + field(target_veil, r.target_veil_cd_m2) + "," +
            field(target, contrast) + "," + field(target_veil, veiled) + "," + (r.active.retina ? "1" : "0") + "," +
            (r.active.afterimages ? "1" : "0") + "," + (r.active.mesopic ? "1" : "0") + "," +
-           (r.active.acuity ? "1" : "0") + "\n";
+           (r.active.acuity ? "1" : "0") + "," + number(r.pupil_model_mm) + "," +
+           field(r.pupil_recorded_mm > 0.0, r.pupil_recorded_mm) + "\n";
   Summary& s = summary_[viewer];
   ++s.frames;
   s.glare_frames += r.active.glare || r.active.glare_reused;

@@ -26,11 +26,14 @@ namespace eyestream::pipeline {
 //   in frames without one): target_cd_m2, background_cd_m2 (its surround),
 //   target_veil_cd_m2 (veil at the target's centroid), contrast
 //   ((L_t - L_b) / L_b) and contrast_veiled ((L_t - L_b) / (L_b + L_v),
-//   empty when the veil is).
+//   empty when the veil is); retina, afterimages, mesopic, acuity (1 when
+//   the stage worked); pupil_model_mm (the pupil model's diameter) and
+//   pupil_recorded_mm (the gaze log's for the frame, bridged across blinks;
+//   empty without one): pupil_mm is the recorded one with --pupil-from-gaze.
 inline constexpr const char* kReportColumns =
     "frame,time_s,viewer,gaze_x,gaze_y,eye,adaptation_cd_m2,pupil_mm,peak_cd_m2,glare,veil_cd_m2,ti_percent,"
     "ti_valid,target_cd_m2,background_cd_m2,target_veil_cd_m2,contrast,contrast_veiled,retina,afterimages,mesopic,"
-    "acuity";
+    "acuity,pupil_model_mm,pupil_recorded_mm";
 
 struct ReportViewer {
   std::string label;

@@ -71,6 +71,7 @@ io::GazeImportOptions gaze_import_options(const Settings& s, const io::SourceInf
   o.sync_message = s.gaze_sync_message;
   o.recording = s.gaze_recording;
   o.eye = s.gaze_eye;
+  o.pupil_scale_mm = s.gaze_pupil_scale_mm;
   return o;
 }
 
@@ -98,6 +99,12 @@ LoadedGaze load_gaze(const Settings& s, const io::SourceInfo& info) {
       info.frame_count > 0 && info.frames_per_second > 0 ? double(info.frame_count) / info.frames_per_second : -1.0;
   g.summary = io::summarise_gaze(g.samples, read.format, info.width, info.height, end_s);
   g.summary->notes = read.notes;
+  if (s.pupil_from_gaze &&
+      std::none_of(g.samples.begin(), g.samples.end(), [](const io::GazeSample& v) { return std::isfinite(v.pupil_mm); }))
+    throw InputError(s.gaze + ": --pupil-from-gaze: the log records no pupil diameter" +
+                     std::string(read.format == io::GazeFormat::kEyeLink
+                                     ? " (EyeLink: give millimetres per pupil unit with --gaze-pupil-scale)"
+                                     : " (native logs: a pupil_mm column; Tobii: Pupil diameter left/right)"));
   return g;
 }
 

@@ -35,6 +35,8 @@ ParamSet run_parameters(Settings& s) {
                  {"auto", "native", "pupil-core", "neon", "neon-surface", "tobii", "eyelink"}));
   set.add(text("gaze-recording", "Neon, Tobii: the recording to read when the export holds several", in,
                &s.gaze_recording));
+  set.add(number("gaze-pupil-scale", "mm", "EyeLink: millimetres per unit of the samples' pupil column (0: not read)",
+                 in, &s.gaze_pupil_scale_mm, 0, 100));
   set.add(choice("gaze-eye", "EyeLink binocular files: the left or right eye, or their average", in, &s.gaze_eye,
                  {"average", "left", "right"}));
   set.add(number("gaze-offset", "s", "added to every gaze time (after sync)", in, &s.gaze_offset_s, -1e6, 1e6));
@@ -106,6 +108,10 @@ ParamSet run_parameters(Settings& s) {
                  "ocular pigmentation p of CIE 146 (0 very dark, 0.5 brown, 1 light, 1.2 very light blue eyes); "
                  "cie model only",
                  optics, &s.viewer.pigmentation, 0, 1.2));
+  set.add(flag("pupil-from-gaze",
+               "the pupil diameter the eye tracker recorded drives the optics (bridged across blinks); the model's "
+               "pupil is reported beside it",
+               optics, &s.pupil_from_gaze));
   set.add(flag("lens-yellowing",
                "the lens absorbs short wavelengths by --viewer-age (Pokorny et al. 1987), against a 32-year-old's",
                optics, &s.lens_yellowing));

@@ -62,6 +62,8 @@ struct Settings {
   std::string pupil_model = "moon-spencer";  // or watson-yellott (glare/pupil.hpp)
   bool flare_lines = true;            // radial streaks of corona and halo (glare/flare_lines.hpp)
   bool lens_yellowing = false;        // the lens's density by age (glare/lens_density.hpp)
+  bool pupil_from_gaze = false;       // the recorded pupil drives the optics
+  double gaze_pupil_scale_mm = 0.0;   // EyeLink: mm per unit of its pupil column
   std::string glare_engine = "exact"; // Vos PSF: exact (full-resolution FFT) or split (tail at reduced resolution)
   int glare_tail_factor = 4;          // the split engine's reduction of the tail
   double glare_resolution = 1.0;      // the convolution's px/deg over the frame's (the light kept in a pixel stays sharp)

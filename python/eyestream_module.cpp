@@ -26,21 +26,24 @@ std::string setting_text(const py::handle& v) {
   return py::str(v).cast<std::string>();
 }
 
-// Samples as (t, x, y[, closed[, lost]]) rows: a sequence of tuples or an
-// N x 3..5 array.
+// Samples as (t, x, y[, closed[, lost[, pupil_mm]]]) rows: a sequence of
+// tuples or an N x 3..6 array.
 std::vector<eyestream::Gaze> gaze_samples(const py::object& gaze) {
   std::vector<eyestream::Gaze> out;
   if (gaze.is_none()) return out;
   for (const py::handle row : gaze) {
     const py::sequence s = py::reinterpret_borrow<py::sequence>(row);
     const size_t n = py::len(s);
-    if (n < 3 || n > 5) throw py::value_error("a gaze sample is (t, x, y[, closed[, lost]]), not " + std::to_string(n) + " values");
+    if (n < 3 || n > 6)
+      throw py::value_error("a gaze sample is (t, x, y[, closed[, lost[, pupil_mm]]]), not " + std::to_string(n) +
+                            " values");
     eyestream::Gaze g;
     g.t_s = s[0].cast<double>();
     g.x = s[1].cast<double>();
     g.y = s[2].cast<double>();
     g.closed = n > 3 && s[3].cast<double>() != 0.0;
     g.lost = n > 4 && s[4].cast<double>() != 0.0;
+    if (n > 5 && !s[5].is_none()) g.pupil_mm = s[5].cast<double>();
     out.push_back(g);
   }
   return out;
@@ -119,6 +122,7 @@ struct PyEye {
     py::dict d;
     d["adaptation_cd_m2"] = r.adaptation_cd_m2;
     d["pupil_mm"] = r.pupil_mm;
+    d["pupil_model_mm"] = r.pupil_model_mm;
     d["gaze_x"] = r.gaze_x;
     d["gaze_y"] = r.gaze_y;
     d["eye_closed"] = r.eye_closed;
@@ -209,7 +213,7 @@ PYBIND11_MODULE(eyestream, m) {
       .def("process", &PyEye::process, py::arg("frame"), py::arg("gaze") = py::none(),
            "process(frame, gaze=None) -> the display-linear image (float32 HxWx3, 1 = the display's peak).\n\n"
            "frame: HxWx3 linear Rec.709 RGB in cd/m^2 (float32 with packed pixels is read in place, anything\n"
-           "else converted). gaze: the samples (t, x, y[, closed[, lost]]) inside the frame's interval\n"
+           "else converted). gaze: the samples (t, x, y[, closed[, lost[, pupil_mm]]]) inside the frame's interval\n"
            "[n / fps, (n + 1) / fps), in seconds and frame pixels; without samples the last gaze holds.")
       .def_property_readonly("code", &PyEye::code,
                              "the last frame encoded for the display and dithered (uint8 HxWx3; uint16 with png_bits=16)")

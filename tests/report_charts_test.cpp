@@ -23,7 +23,7 @@ std::string report_text(int frames, int closed_from, bool target) {
       const bool closed = i >= closed_from;
       text += std::to_string(i) + "," + std::to_string(i / 30.0) + "," + v + ",1,2," + (closed ? "closed" : "open") +
               ",0.5,4.1,1e5,1," + (closed ? "," : "0.2,30") + ",1," +
-              (target ? "0.6,0.3,0.2,1,0.6" : ",,,,") + ",1,1,0,0\n";
+              (target ? "0.6,0.3,0.2,1,0.6" : ",,,,") + ",1,1,0,0,4.1,\n";
     }
   return text;
 }

@@ -81,7 +81,8 @@ struct Eye::Impl {
       if (!std::isfinite(g.t_s) || !std::isfinite(g.x) || !std::isfinite(g.y))
         throw UsageError("a gaze sample of frame " + std::to_string(index) + " is not finite");
       samples.push_back({g.t_s, g.x, g.y,
-                         g.closed ? io::EyeState::kClosed : g.lost ? io::EyeState::kLost : io::EyeState::kOpen});
+                         g.closed ? io::EyeState::kClosed : g.lost ? io::EyeState::kLost : io::EyeState::kOpen,
+                         g.pupil_mm});
     }
     std::stable_sort(samples.begin(), samples.end(),
                      [](const io::GazeSample& a, const io::GazeSample& b) { return a.t_s < b.t_s; });
@@ -90,6 +91,12 @@ struct Eye::Impl {
       const auto known = std::find_if(samples.rbegin(), samples.rend(),
                                       [](const io::GazeSample& g) { return g.state == io::EyeState::kOpen; });
       carried.clear();
+      // The last recorded pupil too, when an open sample after it has none
+      // (the timeline holds it across frames without one).
+      const auto measured = std::find_if(samples.rbegin(), samples.rend(), [](const io::GazeSample& g) {
+        return g.state == io::EyeState::kOpen && std::isfinite(g.pupil_mm);
+      });
+      if (measured != samples.rend() && measured != known) carried.push_back(*measured);
       if (known != samples.rend()) carried.push_back(*known);
       if (samples.back().state != io::EyeState::kOpen) carried.push_back(samples.back());
     }
@@ -130,12 +137,15 @@ Frame Eye::process(const cv::Mat& rgb, const std::vector<Gaze>& gaze) {
     const double t0 = double(impl_->index) / fps(), t1 = double(impl_->index + 1) / fps();
     const io::SceneFrame scene{rgb, t0, impl_->index, "frame " + std::to_string(impl_->index)};
     pipeline::FrameReport r;
-    io::DisplayFrame shown = impl_->eye.process(scene, impl_->segments(gaze, t0, t1), &r);
+    const std::vector<pipeline::GazeSegment> segments = impl_->segments(gaze, t0, t1);
+    io::DisplayFrame shown = impl_->eye.process(scene, segments, &r);
     Frame out;
     out.linear = shown.linear;
     retina::encode_display(out.linear, impl_->bits, impl_->index, impl_->plan.encoding, out.code);
-    out.report = {std::pow(10.0, r.adaptation_log), impl_->eye.save().pupil_mm.value_or(0.0), r.gaze_x, r.gaze_y,
-                  r.eye_closed, r.active.glare, r.active.retina, r.active.mesopic, r.active.afterimages};
+    const double model = impl_->eye.save().pupil_mm.value_or(0.0);
+    const double recorded = impl_->plan.pupil_from_gaze ? segments.front().recorded_pupil_mm : NAN;
+    out.report = {std::pow(10.0, r.adaptation_log), std::isfinite(recorded) ? recorded : model, model, r.gaze_x,
+                  r.gaze_y, r.eye_closed, r.active.glare, r.active.retina, r.active.mesopic, r.active.afterimages};
     if (impl_->plan.report) {
       out.report.peak_cd_m2 = r.peak_cd_m2;
       out.report.veil_cd_m2 = r.veil_cd_m2;
@@ -162,17 +172,18 @@ Eye::State Eye::state() const {
   s.numbers = {double(impl_->index), m.adaptation_log.value_or(NAN), m.pupil_mm.value_or(NAN),
                m.retina_started ? 1.0 : 0.0};
   for (const io::GazeSample& g : impl_->carried)
-    s.numbers.insert(s.numbers.end(), {g.t_s, g.x, g.y, double(int(g.state))});
+    s.numbers.insert(s.numbers.end(), {g.t_s, g.x, g.y, double(int(g.state)), g.pupil_mm});
   return s;
 }
 
 void Eye::restore(const State& s) {
   translated([&] {
     const auto whole = [](double v, double most) { return std::isfinite(v) && v >= 0 && v <= most && v == std::floor(v); };
-    bool ok = s.numbers.size() >= 4 && (s.numbers.size() - 4) % 4 == 0 && whole(s.numbers[0], 1e15);
-    for (size_t i = 4; ok && i + 3 < s.numbers.size(); i += 4)
+    // Four numbers, then five per carried sample: t, x, y, state, pupil (NaN: none).
+    bool ok = s.numbers.size() >= 4 && (s.numbers.size() - 4) % 5 == 0 && whole(s.numbers[0], 1e15);
+    for (size_t i = 4; ok && i + 4 < s.numbers.size(); i += 5)
       ok = std::isfinite(s.numbers[i]) && std::isfinite(s.numbers[i + 1]) && std::isfinite(s.numbers[i + 2]) &&
-           whole(s.numbers[i + 3], 2);
+           whole(s.numbers[i + 3], 2) && (std::isnan(s.numbers[i + 4]) || s.numbers[i + 4] > 0.0);
     if (!ok) throw UsageError("the eye's state is malformed");
     pipeline::EyeMemory m;
     m.retina = s.mats;
@@ -184,8 +195,9 @@ void Eye::restore(const State& s) {
     impl_->eye.restore(m);
     impl_->index = std::int64_t(s.numbers[0]);
     impl_->carried.clear();
-    for (size_t i = 4; i + 3 < s.numbers.size(); i += 4)
-      impl_->carried.push_back({s.numbers[i], s.numbers[i + 1], s.numbers[i + 2], io::EyeState(int(s.numbers[i + 3]))});
+    for (size_t i = 4; i + 4 < s.numbers.size(); i += 5)
+      impl_->carried.push_back(
+          {s.numbers[i], s.numbers[i + 1], s.numbers[i + 2], io::EyeState(int(s.numbers[i + 3])), s.numbers[i + 4]});
     return 0;
   });
 }

@@ -211,6 +211,23 @@ class StateAndErrors(unittest.TestCase):
             with self.assertRaises((TypeError, ValueError)):
                 second.restore(([bad] + list(saved[0][1:]), saved[1]))
 
+    def test_a_recorded_pupil_drives_the_optics(self):
+        # In scotopic light the lenticular halo needs a pupil over 2.5 mm and
+        # is whole from 3.5 mm: a recorded 3 mm pupil shows less of it than
+        # the model's wide one.
+        recorded = eyestream.Eye(W, H, FPS, pupil_from_gaze=True, report=True)
+        modelled = eyestream.Eye(W, H, FPS, report=True)
+        for n in range(4):
+            t = n / FPS
+            gaze = [(t, 30.0, 20.0, 0, 0, 2.5), (t + 0.01, 30.0, 20.0, 0, 0, 3.5)] if n < 3 else []
+            dark = scene(n) * 1e-3
+            a = recorded.process(dark, gaze)
+            b = modelled.process(dark, [g[:3] for g in gaze])
+            # The frame's mean; without samples, the last recorded diameter held.
+            self.assertAlmostEqual(recorded.report["pupil_mm"], 3.0 if n < 3 else 3.5, places=9)
+            self.assertGreater(recorded.report["pupil_model_mm"], 4.0)
+            self.assertFalse(np.array_equal(a, b), f"frame {n}")
+
     def test_errors_carry_the_command_lines_message_and_exit_code(self):
         with self.assertRaises(eyestream.Error) as caught:
             eyestream.Eye(W, H, FPS, viewer_age=500)

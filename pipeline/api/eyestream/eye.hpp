@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <map>
 #include <memory>
 #include <opencv2/core.hpp>
@@ -38,12 +39,17 @@ struct Gaze {
   double t_s = 0.0, x = 0.0, y = 0.0;
   bool closed = false;
   bool lost = false;
+  // The pupil diameter the tracker recorded (mm); NaN when none. With the
+  // setting "pupil-from-gaze" it drives the optics, held across frames
+  // without one.
+  double pupil_mm = std::numeric_limits<double>::quiet_NaN();
 };
 
 // What happened to one frame.
 struct FrameReport {
   double adaptation_cd_m2 = 0.0;
-  double pupil_mm = 0.0;
+  double pupil_mm = 0.0;        // the optics' pupil: the recorded one ("pupil-from-gaze") or the model's
+  double pupil_model_mm = 0.0;  // the model's, which follows the field luminance
   double gaze_x = 0.0, gaze_y = 0.0;
   bool eye_closed = false;
   bool glare = false, retina = false, mesopic = false, afterimages = false;  // which stages worked

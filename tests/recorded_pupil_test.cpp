@@ -1,0 +1,218 @@
+// The viewer's own pupil (--pupil-from-gaze): the diameter the eye tracker
+// recorded, read from native logs, Tobii Pro Lab exports and EyeLink ASC
+// files, bridged across a blink, drives the optics; the report shows it
+// beside the model's. The expected diameters are computed here from the
+// fixtures' own numbers.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "io/exr_file.hpp"
+#include "pipeline/gaze_timeline.hpp"
+#include "tests/test_support.hpp"
+
+namespace eyestream {
+namespace {
+
+// The recording: a sample every 10 ms from 5 ms (so none falls on a frame's
+// edge at 30 or 60 frames/s) for 0.5 s at 120 x 60 px, the pupil 3 + 2 t
+// mm (t seconds), the eye closed from 0.10 to 0.20 s (no pupil). The
+// exports' clocks read 1000 ms at the first sample; --gaze-sync 0.995 puts
+// it at 5 ms.
+constexpr double kStep = 0.01, kFirst = 0.005, kEnd = 0.5;
+bool closed_at(double t) { return t >= 0.0999 && t < 0.1999; }
+double sample_time(int i) { return kFirst + i * kStep; }
+double pupil_at(double t) { return 3.0 + 2.0 * t; }
+
+// What the report should say for frame n at `fps`: the mean of the open
+// samples' diameters inside [n / fps, (n + 1) / fps), or across the blink
+// the line between the samples either side, at the interval's middle.
+double expected_pupil(int n, double fps) {
+  const double t0 = n / fps, t1 = (n + 1) / fps;
+  double sum = 0.0, before_t = -1, after_t = -1;
+  int count = 0;
+  for (int i = 0; sample_time(i) < kEnd; ++i) {
+    const double t = sample_time(i);
+    if (closed_at(t)) continue;
+    if (t >= t0 && t < t1) sum += pupil_at(t), ++count;
+    if (t < t0) before_t = t;
+    if (t >= t1 && after_t < 0) after_t = t;
+  }
+  if (count > 0) return sum / count;
+  if (before_t < 0) return pupil_at(after_t);  // before the first sample: the first
+  const double mid = 0.5 * (t0 + t1), w = (mid - before_t) / (after_t - before_t);
+  return pupil_at(before_t) + w * (pupil_at(after_t) - pupil_at(before_t));
+}
+
+std::string native_log() {
+  std::ostringstream o;
+  o << "t,x,y,event,pupil_mm\n";
+  for (int i = 0; sample_time(i) < kEnd; ++i) {
+    const double t = sample_time(i);
+    if (closed_at(t))
+      o << t << ",,,blink,\n";
+    else
+      o << t << ",60,30,fixation," << pupil_at(t) << "\n";
+  }
+  return o.str();
+}
+
+// Tobii: both eyes, the left 0.1 mm larger (their mean is the recording),
+// decimal commas, the left eye invalid in one sample (the right alone is
+// the recording there), and no blink events: the closed eye's samples are
+// invalid (lost), and bridged the same way.
+std::string tobii_log() {
+  std::ostringstream o;
+  o << "Recording timestamp [ms]\tGaze point X\tGaze point Y\tValidity left\tValidity right\t"
+       "Pupil diameter left [mm]\tPupil diameter right [mm]\n";
+  auto comma = [](double v) {
+    std::ostringstream s;
+    s.precision(10);
+    s << v;
+    std::string text = s.str();
+    for (char& c : text)
+      if (c == '.') c = ',';
+    return text;
+  };
+  for (int i = 0; sample_time(i) < kEnd; ++i) {
+    const double t = sample_time(i), clock = 1000 + 10 * i;
+    if (closed_at(t)) {
+      o << comma(clock) << "\t\t\tInvalid\tInvalid\t\t\n";
+    } else if (i == 30) {
+      o << comma(clock) << "\t60\t30\tInvalid\tValid\t9,9\t" << comma(pupil_at(t)) << "\n";
+    } else {
+      o << comma(clock) << "\t60\t30\tValid\tValid\t" << comma(pupil_at(t) + 0.05) << "\t"
+        << comma(pupil_at(t) - 0.05) << "\n";
+    }
+  }
+  return o.str();
+}
+
+// EyeLink: a calibration block, the pupil in the tracker's units (100 per
+// mm here: --gaze-pupil-scale 0.01), blinks as SBLINK / EBLINK.
+std::string eyelink_log() {
+  std::ostringstream o;
+  o << "** CONVERTED FROM rec.edf using edfapi\nMSG\t900 DISPLAY_COORDS 0 0 119 59\n"
+       "MSG\t950 !CAL VALIDATION\n  0.5 0.3\nSTART\t1000 \tLEFT\tSAMPLES\tEVENTS\n";
+  bool in_blink = false;
+  for (int i = 0; sample_time(i) < kEnd; ++i) {
+    const double t = sample_time(i);
+    const double ms = 1000 + 10 * i;
+    if (closed_at(t) && !in_blink) o << "SBLINK L " << ms << "\n", in_blink = true;
+    if (!closed_at(t) && in_blink) o << "EBLINK L " << ms - 100 << " " << ms << " 100\n", in_blink = false;
+    if (closed_at(t))
+      o << ms << "\t   .\t   .\t    0.0\t...\n";
+    else
+      o << ms << "\t  60.0\t  30.0\t " << 100 * pupil_at(t) << "\t...\n";
+  }
+  o << "END\t" << 1000 + 1000 * kEnd << " \tSAMPLES\tEVENTS\n";  // (after the last sample)
+  return o.str();
+}
+
+std::vector<std::map<std::string, std::string>> read_report(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  const std::vector<std::string> names = test::csv_fields(line);
+  std::vector<std::map<std::string, std::string>> rows;
+  while (std::getline(in, line)) {
+    const std::vector<std::string> fields = test::csv_fields(line);
+    auto& r = rows.emplace_back();
+    for (size_t i = 0; i < names.size() && i < fields.size(); ++i) r[names[i]] = fields[i];
+  }
+  return rows;
+}
+
+TEST(RecordedPupil, TheTimelineAveragesInsideAFrameAndBridgesABlink) {
+  std::vector<io::GazeSample> samples;
+  for (int i = 0; sample_time(i) < kEnd; ++i) {
+    const double t = sample_time(i);
+    io::GazeSample s{t, 60, 30, closed_at(t) ? io::EyeState::kClosed : io::EyeState::kOpen};
+    if (!closed_at(t)) s.pupil_mm = pupil_at(t);
+    samples.push_back(s);
+  }
+  const pipeline::GazeTimeline timeline(samples, 60, 30);
+  for (int n = 0; n < 15; ++n)
+    EXPECT_NEAR(*timeline.recorded_pupil_mm(n / 30.0, (n + 1) / 30.0), expected_pupil(n, 30.0), 1e-9) << n;
+  EXPECT_NEAR(timeline.segments(0.13, 0.16).front().recorded_pupil_mm, pupil_at(0.145), 1e-9)
+      << "inside the blink: on the line from 0.095 s to 0.205 s";
+  EXPECT_FALSE(pipeline::GazeTimeline({{0.0, 1, 1}}, 0, 0).recorded_pupil_mm(0, 1)) << "no diameter recorded";
+}
+
+// Each format through the command line, at two frame rates: the report's
+// pupil_mm is the recording's, pupil_model_mm the model's, and the veil
+// follows the recorded pupil.
+TEST(RecordedPupil, EachFormatsRecordingDrivesTheOpticsThroughTheCommandLine) {
+  test::ScratchDir dir;
+  const struct {
+    const char* name;
+    std::string text;
+    std::string options;
+  } formats[] = {{"log.csv", native_log(), ""},  // (Tobii exports carry no blinks)
+                 {"export.tsv", tobii_log(), " --gaze-format tobii --gaze-sync 0.995"},
+                 {"rec.asc", eyelink_log(), " --gaze-format eyelink --gaze-sync 0.995 --gaze-pupil-scale 0.01"}};
+  for (const char* fps : {"30", "60"}) {
+    const std::string scene = dir / (std::string("h") + fps);
+    ASSERT_EQ(test::run_eyestream("sample headlights -o " + scene + " --width 120 --height 60 --fps " + fps +
+                                  " --duration 0.4")
+                  .exit_code,
+              0);
+    for (const auto& f : formats) {
+      const std::string log = dir / f.name;
+      std::ofstream(log, std::ios::binary) << f.text;
+      const std::string report = dir / (std::string(fps) + f.name + ".csv");
+      const auto r = test::run_eyestream("run -i " + scene + "/frames -g " + log + f.options + " --pupil-from-gaze -o " +
+                                         dir / (std::string(fps) + f.name + ".mp4") + " --report " + report);
+      ASSERT_EQ(r.exit_code, 0) << f.name << ": " << r.output;
+      const auto rows = read_report(report);
+      ASSERT_GE(rows.size(), 10u);
+      bool blink_bridged = false;
+      for (size_t n = 0; n < rows.size(); ++n) {
+        const double expected = expected_pupil(int(n), std::stod(fps));
+        EXPECT_NEAR(std::stod(rows[n].at("pupil_mm")), expected, 2e-5 * expected) << f.name << " frame " << n;
+        EXPECT_NEAR(std::stod(rows[n].at("pupil_recorded_mm")), expected, 2e-5 * expected) << f.name;
+        EXPECT_GT(std::abs(std::stod(rows[n].at("pupil_model_mm")) - expected), 0.05) << "the model differs";
+        blink_bridged |= rows[n].at("eye") == "closed";
+      }
+      if (std::string(f.name) != "export.tsv") EXPECT_TRUE(blink_bridged) << f.name << ": a frame inside the blink";
+    }
+  }
+  // The optics follow the recording: in scotopic light (the dusk scene at
+  // 0.01 cd/m^2) the lenticular halo needs a pupil over 2.5 mm and is
+  // whole from 3.5 mm (psf_weights.hpp), so the recorded 3.0-3.9 mm and the
+  // model's wide pupil give different retinal images.
+  ASSERT_EQ(test::run_eyestream("sample dusk -o " + dir / "d" + " --width 120 --height 60 --duration 0.2 --luminance 0.01")
+                .exit_code,
+            0);
+  for (const bool recorded : {true, false}) {
+    const auto r = test::run_eyestream("run -i " + dir / "d/frames" + " -g " + dir / "log.csv" + " -o " +
+                                       dir / (recorded ? "r/%05d.exr" : "m/%05d.exr") + " --report " +
+                                       dir / (recorded ? "r.csv" : "m.csv") + (recorded ? " --pupil-from-gaze" : ""));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+  }
+  const cv::Mat with = io::read_exr(dir / "r/00000.exr", 1 << 20).rgb, without = io::read_exr(dir / "m/00000.exr", 1 << 20).rgb;
+  EXPECT_GT(cv::norm(with, without, cv::NORM_INF), 0.0);
+  EXPECT_EQ(read_report(dir / "m.csv")[0].at("pupil_recorded_mm"), "") << "not asked for";
+}
+
+TEST(RecordedPupil, ALogWithoutDiametersIsRefusedNamingTheOption) {
+  test::ScratchDir dir;
+  ASSERT_EQ(test::run_eyestream("sample headlights -o " + dir / "h" + " --width 64 --height 36 --duration 0.1").exit_code,
+            0);
+  auto r = test::run_eyestream("run -i " + dir / "h/frames" + " -g " + dir / "h/gaze.csv" +
+                               " --pupil-from-gaze -o " + dir / "x.mp4");
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_NE(r.output.find("eyestream: error: " + dir / "h/gaze.csv" + ": --pupil-from-gaze"), std::string::npos)
+      << r.output;
+  std::ofstream(dir / "rec.asc") << eyelink_log();
+  r = test::run_eyestream("run -i " + dir / "h/frames" + " -g " + dir / "rec.asc" +
+                          " --gaze-format eyelink --pupil-from-gaze -o " + dir / "y.mp4");
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_NE(r.output.find("--gaze-pupil-scale"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace eyestream
