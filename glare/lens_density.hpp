@@ -16,8 +16,8 @@ namespace eyestream::glare {
 double lens_density(double lambda_nm, double age_years);
 
 // The change a viewer's lens makes to linear Rec.709 RGB against the
-// standard observer's (32 years, the mean age of the CIE 1964 observers
-// the model is referred to), T = 10^-(D(age) - D(32)): each display
+// observer of 32 years that Pokorny et al.'s formula is referred to, T =
+// 10^-(D(age) - D(32)) (younger viewers get T above 1 in the blue): each display
 // channel's spectrum taken as its colour-matching function s_c
 // (non-negative Rec.709 CMFs), the filtered spectrum's least-squares
 // coordinates in the s_k, M = G^-1 F with G[k][c] = integral of s_k s_c and

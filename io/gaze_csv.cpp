@@ -45,8 +45,10 @@ std::vector<GazeSample> parse_gaze_csv(const std::string& text, const std::strin
     const bool has_x = parse_number(f[size_t(cx)], s.x), has_y = parse_number(f[size_t(cy)], s.y);
     if (s.state == EyeState::kOpen && !(has_x && has_y))
       throw InputError(where + ": position '" + f[size_t(cx)] + "," + f[size_t(cy)] + "' is not a pair of numbers");
-    if (cp >= 0 && cp < int(f.size()) && !f[size_t(cp)].empty() && !parse_number(f[size_t(cp)], s.pupil_mm))
-      throw InputError(where + ": pupil_mm '" + f[size_t(cp)] + "' is not a number");
+    // (Empty or "nan", as numpy writes a missing value: no diameter.)
+    const std::string pupil = cp >= 0 && cp < int(f.size()) ? f[size_t(cp)] : "";
+    if (!pupil.empty() && pupil != "nan" && pupil != "NaN" && !parse_number(pupil, s.pupil_mm))
+      throw InputError(where + ": pupil_mm '" + pupil + "' is not a number");
     if (units == GazeUnits::kNormalised) {
       s.x *= frame_width;
       s.y *= frame_height;

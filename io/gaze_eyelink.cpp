@@ -1,6 +1,8 @@
 // SR Research EyeLink ASC files (edf2asc): sample lines "time x y pupil"
 // (binocular: "time xl yl pl xr yr pr"; the pupil in the tracker's own
-// units, read when a scale to mm is given), "." for missing values, SBLINK /
+// units, area or diameter as the "PUPIL AREA|DIAMETER" line says, area
+// when none does, read when a scale to mm is given: diameter = scale x
+// diameter units, or scale x sqrt(area units)), "." for missing values, SBLINK /
 // EBLINK events, screen size from the DISPLAY_COORDS message; times in ms
 // (fractional at 2 kHz). Real files carry calibration blocks whose values
 // continue on indented lines: samples are read only from lines that start
@@ -8,6 +10,7 @@
 // with no START line, an excerpt, is read whole).
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <optional>
 #include <sstream>
 
@@ -29,6 +32,7 @@ std::vector<GazeSample> parse_eyelink(const std::string& text, const std::string
   const bool blocks = text.rfind("START", 0) == 0 || text.find("\nSTART") != std::string::npos;
   bool recording = !blocks;
   bool display_coords = false;
+  bool pupil_area = true;  // EyeLink's default; "PUPIL DIAMETER" says otherwise
   double screen_w = o.source_width, screen_h = o.source_height;
   std::vector<GazeSample> raw;  // positions in screen pixels until the end
   while (std::getline(in, line)) {
@@ -50,6 +54,10 @@ std::vector<GazeSample> parse_eyelink(const std::string& text, const std::string
       if (sync_s && !*sync_s && !o.sync_message.empty() && w.size() >= 3 &&
           line.find(o.sync_message, line.find(w[1]) + w[1].size()) != std::string::npos && parse_number(w[1], t))
         *sync_s = t * 1e-3;  // the stimulus onset the user marked
+      continue;
+    }
+    if (w[0] == "PUPIL" && w.size() >= 2) {
+      pupil_area = w[1] != "DIAMETER";
       continue;
     }
     if (w[0] == "START" || w[0] == "END") {
@@ -92,8 +100,10 @@ std::vector<GazeSample> parse_eyelink(const std::string& text, const std::string
     double pl = 0.0, pr = 0.0;
     const bool pupil_left = use_left && w.size() >= 4 && parse_number(w[3], pl) && pl > 0.0;
     const bool pupil_right = use_right && w.size() >= 7 && parse_number(w[6], pr) && pr > 0.0;
-    if (o.pupil_scale_mm > 0.0 && (pupil_left || pupil_right))
-      s.pupil_mm = o.pupil_scale_mm * (pupil_left && pupil_right ? 0.5 * (pl + pr) : pupil_left ? pl : pr);
+    if (o.pupil_scale_mm > 0.0 && (pupil_left || pupil_right)) {
+      const auto diameter = [&](double v) { return o.pupil_scale_mm * (pupil_area ? std::sqrt(v) : v); };
+      s.pupil_mm = pupil_left && pupil_right ? 0.5 * (diameter(pl) + diameter(pr)) : diameter(pupil_left ? pl : pr);
+    }
     if (use_left && use_right)
       x = 0.5 * (xl + xr), y = 0.5 * (yl + yr);
     else if (use_left)

@@ -29,8 +29,9 @@ struct GazeImportOptions {
   // them unless this names the one to read.
   std::string recording;
   std::string eye = "average";  // EyeLink binocular files: left, right or average
-  // EyeLink: millimetres per unit of the samples' pupil column (the
-  // tracker's arbitrary area or diameter units); 0: the pupil is not read.
+  // EyeLink: millimetres per unit of the samples' pupil diameter, or per
+  // square root of a unit of pupil area (files whose "PUPIL AREA" line, or
+  // no PUPIL line, says they hold areas); 0: the pupil is not read.
   double pupil_scale_mm = 0.0;
   // Pupil Core and Neon: the blinks.csv beside the export (read_gaze fills
   // these when it is there); its blinks close the eye.

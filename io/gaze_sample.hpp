@@ -20,4 +20,10 @@ struct GazeSample {
   double pupil_mm = std::numeric_limits<double>::quiet_NaN();
 };
 
+// Whether a sample's recorded pupil can drive the optics: an open eye and
+// a finite diameter above 0.
+inline bool has_usable_pupil(const GazeSample& s) {
+  return s.state == EyeState::kOpen && s.pupil_mm > 0.0 && s.pupil_mm < std::numeric_limits<double>::infinity();
+}
+
 }  // namespace eyestream::io

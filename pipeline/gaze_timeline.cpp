@@ -13,8 +13,7 @@ GazeTimeline::GazeTimeline(const std::vector<io::GazeSample>& samples, double de
       y = s.y;
     }
     held_.push_back({s.t_s, x, y, s.state == io::EyeState::kClosed});
-    if (s.state == io::EyeState::kOpen && std::isfinite(s.pupil_mm) && s.pupil_mm > 0.0)
-      pupils_.push_back({s.t_s, s.pupil_mm});
+    if (io::has_usable_pupil(s)) pupils_.push_back({s.t_s, s.pupil_mm});
   }
   if (held_.empty()) held_.push_back({0.0, default_x, default_y, false});
 }

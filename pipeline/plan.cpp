@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "io/error.hpp"
+#include "retina/luminance.hpp"
 
 namespace eyestream::pipeline {
 
@@ -52,7 +53,13 @@ Plan compile_plan(const Settings& s, const io::SourceInfo& source) {
   p.glare.display_peak_cd_m2 = s.display_peak_cd_m2;
   p.glare.model = s.psf_model == "cie" ? glare::PsfModel::cie : glare::PsfModel::vos;
   p.glare.flare_lines = s.flare_lines;
-  if (s.lens_yellowing) p.lens_filter = glare::lens_filter_rgb(s.viewer.age_years);
+  if (s.lens_yellowing) {
+    p.lens_filter = glare::lens_filter_rgb(s.viewer.age_years);
+    // A surround given in cd/m^2 reaches the retina through the same lens
+    // (one taken from the frame's edge already has).
+    const cv::Vec3f white = *p.lens_filter * cv::Vec3f(1, 1, 1);
+    if (!p.surround_from_edge) p.surround_cd_m2 *= double(retina::photopic_luminance(white));
+  }
   p.pupil_from_gaze = s.pupil_from_gaze;
   p.glare.viewer = s.viewer;
   p.glare.viewer.pupil =

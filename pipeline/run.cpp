@@ -91,6 +91,8 @@ struct LoadedGaze {
 // The gaze log and what it holds against the video (gaze_summary.hpp).
 LoadedGaze load_gaze(const Settings& s, const io::SourceInfo& info) {
   LoadedGaze g;
+  if (s.gaze.empty() && s.pupil_from_gaze)
+    throw UsageError("--pupil-from-gaze needs a gaze log with pupil diameters (-g)");
   if (s.gaze.empty()) return g;
   const io::GazeImportOptions o = gaze_import_options(s, info);
   io::GazeRead read;
@@ -99,8 +101,7 @@ LoadedGaze load_gaze(const Settings& s, const io::SourceInfo& info) {
       info.frame_count > 0 && info.frames_per_second > 0 ? double(info.frame_count) / info.frames_per_second : -1.0;
   g.summary = io::summarise_gaze(g.samples, read.format, info.width, info.height, end_s);
   g.summary->notes = read.notes;
-  if (s.pupil_from_gaze &&
-      std::none_of(g.samples.begin(), g.samples.end(), [](const io::GazeSample& v) { return std::isfinite(v.pupil_mm); }))
+  if (s.pupil_from_gaze && std::none_of(g.samples.begin(), g.samples.end(), io::has_usable_pupil))
     throw InputError(s.gaze + ": --pupil-from-gaze: the log records no pupil diameter" +
                      std::string(read.format == io::GazeFormat::kEyeLink
                                      ? " (EyeLink: give millimetres per pupil unit with --gaze-pupil-scale)"

@@ -35,7 +35,9 @@ ParamSet run_parameters(Settings& s) {
                  {"auto", "native", "pupil-core", "neon", "neon-surface", "tobii", "eyelink"}));
   set.add(text("gaze-recording", "Neon, Tobii: the recording to read when the export holds several", in,
                &s.gaze_recording));
-  set.add(number("gaze-pupil-scale", "mm", "EyeLink: millimetres per unit of the samples' pupil column (0: not read)",
+  set.add(number("gaze-pupil-scale", "mm",
+                 "EyeLink: millimetres per unit of pupil diameter, or per square root of a unit of pupil area "
+                 "(PUPIL AREA files, EyeLink's default); 0: the pupil is not read",
                  in, &s.gaze_pupil_scale_mm, 0, 100));
   set.add(choice("gaze-eye", "EyeLink binocular files: the left or right eye, or their average", in, &s.gaze_eye,
                  {"average", "left", "right"}));

@@ -68,6 +68,7 @@ std::vector<PanelSpec> panel_specs(const Settings& s) {
     plain.settings.mesopic = false;
     plain.settings.bleaching_afterimages = false;
     plain.settings.adaptation_afterimages = false;
+    plain.settings.lens_yellowing = false;  // the input as it is
     panels.push_back(plain);
   }
   if (s.viewers.empty())

@@ -83,21 +83,6 @@ TEST(LibraryApi, AnEyeComputesWhatTheCommandLineComputes) {
   }
 }
 
-// The report's columns by name, one map per row.
-std::vector<std::map<std::string, std::string>> read_csv(const std::string& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  const std::vector<std::string> names = test::csv_fields(line);
-  std::vector<std::map<std::string, std::string>> rows;
-  while (std::getline(in, line)) {
-    const std::vector<std::string> fields = test::csv_fields(line);
-    std::map<std::string, std::string>& r = rows.emplace_back();
-    for (size_t i = 0; i < names.size() && i < fields.size(); ++i) r[names[i]] = fields[i];
-  }
-  return rows;
-}
-
 TEST(LibraryApi, TheFramesReportHasTheCommandLinesVeilAndTi) {
   test::ScratchDir dir;
   ASSERT_EQ(test::run_eyestream("sample headlights -o " + (dir / "h") + " --width 64 --height 36 --duration 0.3")
@@ -106,7 +91,7 @@ TEST(LibraryApi, TheFramesReportHasTheCommandLinesVeilAndTi) {
   const auto r = test::run_eyestream("run -i " + (dir / "h/frames") + " -g " + (dir / "h/gaze.csv") + " -o " +
                                      (dir / "e/%05d.png") + " --quality fast --report " + (dir / "r.csv"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const auto rows = read_csv(dir / "r.csv");
+  const auto rows = test::csv_rows(dir / "r.csv");
   const Clip clip = load_clip(dir);
   ASSERT_EQ(rows.size(), clip.frames.size());
   Eye with(64, 36, clip.fps, {{"quality", "fast"}, {"report", "true"}}), without(64, 36, clip.fps, {{"quality", "fast"}});

@@ -3,6 +3,7 @@
 // files, bridged across a blink, drives the optics; the report shows it
 // beside the model's. The expected diameters are computed here from the
 // fixtures' own numbers.
+#include <eyestream/eye.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,6 +12,7 @@
 #include <sstream>
 
 #include "io/exr_file.hpp"
+#include "io/gaze_import.hpp"
 #include "pipeline/gaze_timeline.hpp"
 #include "tests/test_support.hpp"
 
@@ -91,12 +93,13 @@ std::string tobii_log() {
   return o.str();
 }
 
-// EyeLink: a calibration block, the pupil in the tracker's units (100 per
-// mm here: --gaze-pupil-scale 0.01), blinks as SBLINK / EBLINK.
+// EyeLink: a calibration block, the pupil recorded as a diameter in the
+// tracker's units (100 per mm here: --gaze-pupil-scale 0.01), blinks as
+// SBLINK / EBLINK.
 std::string eyelink_log() {
   std::ostringstream o;
   o << "** CONVERTED FROM rec.edf using edfapi\nMSG\t900 DISPLAY_COORDS 0 0 119 59\n"
-       "MSG\t950 !CAL VALIDATION\n  0.5 0.3\nSTART\t1000 \tLEFT\tSAMPLES\tEVENTS\n";
+       "MSG\t950 !CAL VALIDATION\n  0.5 0.3\nSTART\t1000 \tLEFT\tSAMPLES\tEVENTS\nPUPIL\tDIAMETER\n";
   bool in_blink = false;
   for (int i = 0; sample_time(i) < kEnd; ++i) {
     const double t = sample_time(i);
@@ -110,20 +113,6 @@ std::string eyelink_log() {
   }
   o << "END\t" << 1000 + 1000 * kEnd << " \tSAMPLES\tEVENTS\n";  // (after the last sample)
   return o.str();
-}
-
-std::vector<std::map<std::string, std::string>> read_report(const std::string& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  const std::vector<std::string> names = test::csv_fields(line);
-  std::vector<std::map<std::string, std::string>> rows;
-  while (std::getline(in, line)) {
-    const std::vector<std::string> fields = test::csv_fields(line);
-    auto& r = rows.emplace_back();
-    for (size_t i = 0; i < names.size() && i < fields.size(); ++i) r[names[i]] = fields[i];
-  }
-  return rows;
 }
 
 TEST(RecordedPupil, TheTimelineAveragesInsideAFrameAndBridgesABlink) {
@@ -167,7 +156,7 @@ TEST(RecordedPupil, EachFormatsRecordingDrivesTheOpticsThroughTheCommandLine) {
       const auto r = test::run_eyestream("run -i " + scene + "/frames -g " + log + f.options + " --pupil-from-gaze -o " +
                                          dir / (std::string(fps) + f.name + ".mp4") + " --report " + report);
       ASSERT_EQ(r.exit_code, 0) << f.name << ": " << r.output;
-      const auto rows = read_report(report);
+      const auto rows = test::csv_rows(report);
       ASSERT_GE(rows.size(), 10u);
       bool blink_bridged = false;
       for (size_t n = 0; n < rows.size(); ++n) {
@@ -195,7 +184,26 @@ TEST(RecordedPupil, EachFormatsRecordingDrivesTheOpticsThroughTheCommandLine) {
   }
   const cv::Mat with = io::read_exr(dir / "r/00000.exr", 1 << 20).rgb, without = io::read_exr(dir / "m/00000.exr", 1 << 20).rgb;
   EXPECT_GT(cv::norm(with, without, cv::NORM_INF), 0.0);
-  EXPECT_EQ(read_report(dir / "m.csv")[0].at("pupil_recorded_mm"), "") << "not asked for";
+  EXPECT_EQ(test::csv_rows(dir / "m.csv")[0].at("pupil_recorded_mm"), "") << "not asked for";
+}
+
+// EyeLink records pupil area by default: the diameter is the scale times
+// its square root; binocular files average the two eyes' diameters.
+TEST(RecordedPupil, EyeLinkAreasAndBinocularPupils) {
+  io::GazeImportOptions o;
+  o.frame_width = 1000;
+  o.frame_height = 500;
+  o.pupil_scale_mm = 0.1;
+  const std::string area = "MSG\t1000 DISPLAY_COORDS 0 0 999 499\nSTART\t2000 \tLEFT\tSAMPLES\n"
+                           "PUPIL\tAREA\n2000\t100.0\t200.0\t 900.0\t...\nEND\t2001\n";
+  EXPECT_NEAR(io::parse_gaze(area, "a.asc", o).at(0).pupil_mm, 0.1 * 30.0, 1e-12);
+  const std::string both = "MSG\t1000 DISPLAY_COORDS 0 0 999 499\nSTART\t2000 \tLEFT\tRIGHT\tSAMPLES\n"
+                           "PUPIL\tDIAMETER\n2000\t100.0\t200.0\t 40.0\t110.0\t220.0\t 44.0\t.....\nEND\t2001\n";
+  EXPECT_NEAR(io::parse_gaze(both, "b.asc", o).at(0).pupil_mm, 4.2, 1e-12);
+  o.eye = "right";
+  EXPECT_NEAR(io::parse_gaze(both, "b.asc", o).at(0).pupil_mm, 4.4, 1e-12);
+  o.pupil_scale_mm = 0.0;
+  EXPECT_TRUE(std::isnan(io::parse_gaze(both, "b.asc", o).at(0).pupil_mm)) << "no scale: not read";
 }
 
 TEST(RecordedPupil, ALogWithoutDiametersIsRefusedNamingTheOption) {
@@ -212,6 +220,23 @@ TEST(RecordedPupil, ALogWithoutDiametersIsRefusedNamingTheOption) {
                           " --gaze-format eyelink --pupil-from-gaze -o " + dir / "y.mp4");
   EXPECT_EQ(r.exit_code, 3) << r.output;
   EXPECT_NE(r.output.find("--gaze-pupil-scale"), std::string::npos) << r.output;
+  r = test::run_eyestream("run -i " + dir / "h/frames" + " --pupil-from-gaze -o " + dir / "z.mp4");
+  EXPECT_EQ(r.exit_code, 2) << "no gaze log: " << r.output;
+}
+
+// The library: a pupil of 0 (how trackers mark a missing one, e.g. on a
+// blink's samples) is no diameter, the last real one is carried, and the
+// eye's state restores.
+TEST(RecordedPupil, TheLibraryTakesZeroAsNoneAndKeepsTheLastDiameter) {
+  const cv::Mat dark(36, 64, CV_32FC3, cv::Scalar::all(0.01));
+  Eye a(64, 36, 30.0, {{"pupil-from-gaze", "true"}});
+  EXPECT_NEAR(a.process(dark, {{0.0, 32, 18, false, false, 3.2}}).report.pupil_mm, 3.2, 1e-12);
+  EXPECT_NEAR(a.process(dark, {{1 / 30.0, 32, 18, true, false, 0.0}}).report.pupil_mm, 3.2, 1e-12);
+  const Eye::State saved = a.state();
+  Eye b(64, 36, 30.0, {{"pupil-from-gaze", "true"}});
+  ASSERT_NO_THROW(b.restore(saved));
+  EXPECT_NEAR(b.process(dark, {{2 / 30.0, 32, 18, false, false, 0.0}}).report.pupil_mm, 3.2, 1e-12);
+  EXPECT_NEAR(a.process(dark, {{2 / 30.0, 32, 18, false, false, 0.0}}).report.pupil_mm, 3.2, 1e-12);
 }
 
 }  // namespace

@@ -85,4 +85,18 @@ std::vector<std::string> csv_fields(const std::string& row) {
   return out;
 }
 
+std::vector<std::map<std::string, std::string>> csv_rows(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  const std::vector<std::string> names = csv_fields(line);
+  std::vector<std::map<std::string, std::string>> rows;
+  while (std::getline(in, line)) {
+    const std::vector<std::string> fields = csv_fields(line);
+    std::map<std::string, std::string>& r = rows.emplace_back();
+    for (size_t i = 0; i < names.size() && i < fields.size(); ++i) r[names[i]] = fields[i];
+  }
+  return rows;
+}
+
 }  // namespace eyestream::test

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <opencv2/core.hpp>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,9 @@ CommandResult run_eyestream(const std::string& args);
 
 // The fields of one CSV row (no quoting; empty fields kept).
 std::vector<std::string> csv_fields(const std::string& row);
+
+// A CSV file's rows as maps from its header's names to the fields.
+std::vector<std::map<std::string, std::string>> csv_rows(const std::string& path);
 
 // Reads a whole file as bytes.
 std::string read_bytes(const std::string& path);

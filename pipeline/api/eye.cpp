@@ -80,9 +80,11 @@ struct Eye::Impl {
     for (const Gaze& g : gaze) {
       if (!std::isfinite(g.t_s) || !std::isfinite(g.x) || !std::isfinite(g.y))
         throw UsageError("a gaze sample of frame " + std::to_string(index) + " is not finite");
+      // A diameter of 0 or less (how trackers mark a missing pupil) is none.
+      const double pupil = std::isfinite(g.pupil_mm) && g.pupil_mm > 0.0 ? g.pupil_mm : NAN;
       samples.push_back({g.t_s, g.x, g.y,
                          g.closed ? io::EyeState::kClosed : g.lost ? io::EyeState::kLost : io::EyeState::kOpen,
-                         g.pupil_mm});
+                         pupil});
     }
     std::stable_sort(samples.begin(), samples.end(),
                      [](const io::GazeSample& a, const io::GazeSample& b) { return a.t_s < b.t_s; });
@@ -93,9 +95,7 @@ struct Eye::Impl {
       carried.clear();
       // The last recorded pupil too, when an open sample after it has none
       // (the timeline holds it across frames without one).
-      const auto measured = std::find_if(samples.rbegin(), samples.rend(), [](const io::GazeSample& g) {
-        return g.state == io::EyeState::kOpen && std::isfinite(g.pupil_mm);
-      });
+      const auto measured = std::find_if(samples.rbegin(), samples.rend(), io::has_usable_pupil);
       if (measured != samples.rend() && measured != known) carried.push_back(*measured);
       if (known != samples.rend()) carried.push_back(*known);
       if (samples.back().state != io::EyeState::kOpen) carried.push_back(samples.back());
@@ -183,7 +183,8 @@ void Eye::restore(const State& s) {
     bool ok = s.numbers.size() >= 4 && (s.numbers.size() - 4) % 5 == 0 && whole(s.numbers[0], 1e15);
     for (size_t i = 4; ok && i + 4 < s.numbers.size(); i += 5)
       ok = std::isfinite(s.numbers[i]) && std::isfinite(s.numbers[i + 1]) && std::isfinite(s.numbers[i + 2]) &&
-           whole(s.numbers[i + 3], 2) && (std::isnan(s.numbers[i + 4]) || s.numbers[i + 4] > 0.0);
+           whole(s.numbers[i + 3], 2) &&
+           (std::isnan(s.numbers[i + 4]) || (std::isfinite(s.numbers[i + 4]) && s.numbers[i + 4] > 0.0));
     if (!ok) throw UsageError("the eye's state is malformed");
     pipeline::EyeMemory m;
     m.retina = s.mats;
