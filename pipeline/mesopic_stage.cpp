@@ -18,11 +18,15 @@ MesopicStage::MesopicStage(const Plan& plan) : plan_(plan) {
 
 cv::Mat MesopicStage::acuity_level(const cv::Mat& rgb, double adaptation_log, double time_s, double gaze_x,
                                    double gaze_y) const {
+  return level_of(retina::floored_luminance(rgb, plan_.dark_cd_m2), adaptation_log, time_s, gaze_x, gaze_y);
+}
+
+cv::Mat MesopicStage::level_of(const cv::Mat& floored, double adaptation_log, double time_s, double gaze_x,
+                               double gaze_y) const {
   // log10 of the local luminance, low-passed at the coarsest band, held
   // reduced by the level map's factor (1 at reference).
-  const int f = acuity_->level_factor(rgb.size());
-  const cv::Mat luminance =
-      retina::acuity_lowpass(retina::floored_luminance(rgb, plan_.dark_cd_m2), acuity_->sigmas_px().back(), f);
+  const int f = acuity_->level_factor(floored.size());
+  const cv::Mat luminance = retina::acuity_lowpass(floored, acuity_->sigmas_px().back(), f);
   const retina::MesopicParams& m = plan_.mesopic.colour;
   const float floor_rho = float(retina::mesopic_rho(adaptation_log, m));
   cv::Mat rho(luminance.size(), CV_32F);
@@ -34,7 +38,7 @@ cv::Mat MesopicStage::acuity_level(const cv::Mat& rgb, double adaptation_log, do
     }
   });
   cv::Mat level = acuity_->level(rho, time_s, gaze_x, gaze_y, f);
-  if (f > 1) cv::resize(level, level, rgb.size(), 0, 0, cv::INTER_LINEAR);
+  if (f > 1) cv::resize(level, level, floored.size(), 0, 0, cv::INTER_LINEAR);
   return level;
 }
 
@@ -42,21 +46,24 @@ void MesopicStage::render(const cv::Mat& rgb, const retina::ToneCurve& curve, do
                           cv::Mat& out, StageActivity* activity, double gaze_x, double gaze_y) const {
   retina::MesopicColour colour;
   const bool tinted = plan_.mesopic.enabled && retina::mesopic_colour(adaptation_log, plan_.mesopic.colour, colour);
+  const bool local = tinted && plan_.mesopic.colour.local_sigma_deg > 0.0;
+  // Above rho_all_kept no band can be lost: the loss is skipped, exactly
+  // (its result would equal its input), unless the plan forbids skipping.
+  const bool blur = plan_.mesopic.enabled && acuity_ &&
+                    (!plan_.skip || retina::mesopic_rho(adaptation_log, plan_.mesopic.colour) < acuity_->rho_all_kept());
+  // The frame's floored luminance, once for both effects that read it.
+  const cv::Mat floored = local || blur ? retina::floored_luminance(rgb, plan_.dark_cd_m2) : cv::Mat();
   cv::Mat rho;
-  if (tinted && plan_.mesopic.colour.local_sigma_deg > 0.0) {
-    retina::local_rho(rgb, adaptation_log, plan_.mesopic.colour.local_sigma_deg * plan_.pixels_per_degree,
-                      plan_.dark_cd_m2, plan_.mesopic.colour, rho);
+  if (local) {
+    retina::local_rho(floored, adaptation_log, plan_.mesopic.colour.local_sigma_deg * plan_.pixels_per_degree,
+                      plan_.mesopic.colour, rho);
     colour.rho_map = &rho;
   }
   if (tinted)
     retina::tone_map(rgb, curve, colour, out);
   else
     retina::tone_map(rgb, curve, out);
-  // Above rho_all_kept no band can be lost: the loss is skipped, exactly
-  // (its result would equal its input), unless the plan forbids skipping.
-  const bool blur = plan_.mesopic.enabled && acuity_ &&
-                    (!plan_.skip || retina::mesopic_rho(adaptation_log, plan_.mesopic.colour) < acuity_->rho_all_kept());
-  if (blur) acuity_->apply(out, acuity_level(rgb, adaptation_log, time_s, gaze_x, gaze_y));
+  if (blur) acuity_->apply(out, level_of(floored, adaptation_log, time_s, gaze_x, gaze_y));
   if (activity) {
     activity->mesopic = tinted;
     activity->acuity = blur;

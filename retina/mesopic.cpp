@@ -26,18 +26,22 @@ bool mesopic_colour(double adaptation_log, const MesopicParams& p, MesopicColour
   return true;
 }
 
-void local_rho(const cv::Mat& rgb, double adaptation_log, double sigma_px, double floor_cd_m2, const MesopicParams& p,
-               cv::Mat& rho) {
-  cv::Mat l = floored_luminance(rgb, floor_cd_m2);
-  if (sigma_px > 0.0) gaussian_blur(l, l, sigma_px);
-  rho.create(rgb.size(), CV_32F);
+void local_rho(const cv::Mat& luminance, double adaptation_log, double sigma_px, const MesopicParams& p, cv::Mat& rho) {
+  CV_Assert(luminance.type() == CV_32F);
+  cv::Mat l = luminance;
+  if (sigma_px > 0.0) {
+    cv::Mat blurred;
+    gaussian_blur(luminance, blurred, sigma_px);
+    l = blurred;
+  }
+  rho.create(luminance.size(), CV_32F);
   const float a = float(adaptation_log), bottom = float(p.bottom_log), span = float(p.top_log - p.bottom_log);
   const float margin = float(p.local_margin_log);
-  cv::parallel_for_(cv::Range(0, rgb.rows), [&](const cv::Range& rows) {
+  cv::parallel_for_(cv::Range(0, l.rows), [&](const cv::Range& rows) {
     for (int y = rows.start; y < rows.end; ++y) {
       const float* in = l.ptr<float>(y);
       float* o = rho.ptr<float>(y);
-      for (int x = 0; x < rgb.cols; ++x) o[x] = std::clamp((std::max(a, std::log10(in[x]) - margin) - bottom) / span, 0.0f, 1.0f);
+      for (int x = 0; x < l.cols; ++x) o[x] = std::clamp((std::max(a, std::log10(in[x]) - margin) - bottom) / span, 0.0f, 1.0f);
     }
   });
 }

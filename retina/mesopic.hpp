@@ -47,9 +47,8 @@ struct MesopicColour {
 bool mesopic_colour(double adaptation_log, const MesopicParams& p, MesopicColour& out);
 
 // rho per pixel for local mesopic colour: clamp(rho(max(A, log10 L_local -
-// margin)), 0, 1), L_local the photopic luminance of `rgb` blurred by
-// sigma_px (the floor counts for black and non-finite pixels).
-void local_rho(const cv::Mat& rgb, double adaptation_log, double sigma_px, double floor_cd_m2, const MesopicParams& p,
-               cv::Mat& rho);
+// margin)), 0, 1), L_local the frame's floored photopic luminance
+// (floored_luminance(), CV_32F) blurred by sigma_px.
+void local_rho(const cv::Mat& luminance, double adaptation_log, double sigma_px, const MesopicParams& p, cv::Mat& rho);
 
 }  // namespace eyestream::retina
