@@ -44,23 +44,46 @@ cv::Mat read_code_image(const std::string& path) {
 DisplaySequence::DisplaySequence(const std::string& path) : path_(path) {
   if (is_image_path(path)) {
     files_ = list_sequence(path, kImageExtensions, false);
-    linear_ = is_exr(files_.front().path);
+    const bool exr = is_exr(files_.front().path);
+    kind_ = exr ? Kind::kLinear : Kind::kCode;
     for (const SequenceEntry& e : files_) {
       protect_input(e.path);
-      if (is_exr(e.path) != linear_) throw InputError(path + ": mixes EXR and other images");
+      if (is_exr(e.path) != exr) throw InputError(path + ": mixes EXR and other images");
     }
   } else {
     if (!std::filesystem::is_regular_file(path)) throw InputError(path + ": no such file");
     protect_input(path);
     video_ = std::make_unique<VideoReader>(path);
+    const std::string& transfer = video_->colour().transfer;
+    if (transfer == "smpte2084" || transfer == "arib-std-b67") {
+      video_.reset();
+      hdr_ = std::make_unique<VideoSource>(path, VideoSourceOptions{});
+      kind_ = Kind::kHdrLight;
+    }
   }
 }
 
 std::int64_t DisplaySequence::frame_count() const {
+  if (hdr_) return hdr_->info().frame_count;
   return video_ ? video_->frame_count() : std::int64_t(files_.size());
 }
 
+const char* DisplaySequence::kind_name() const {
+  switch (kind_) {
+    case Kind::kLinear: return "linear EXR";
+    case Kind::kHdrLight: return "PQ/HLG video (light)";
+    default: return "display-coded";
+  }
+}
+
 std::optional<DisplayImage> DisplaySequence::next() {
+  if (hdr_) {
+    std::optional<SceneFrame> f = hdr_->next();
+    if (!f) return std::nullopt;
+    cv::Mat relative;
+    f->rgb.convertTo(relative, CV_32FC3, 1.0 / kHdrReferenceWhite);
+    return DisplayImage{relative, f->source, f->index};
+  }
   if (video_) {
     std::optional<VideoFrame> f = video_->next();
     if (!f) return std::nullopt;
@@ -68,7 +91,7 @@ std::optional<DisplayImage> DisplaySequence::next() {
   }
   if (position_ >= files_.size()) return std::nullopt;
   const SequenceEntry& entry = files_[position_++];
-  if (linear_) return DisplayImage{read_exr(entry.path, 400'000'000).rgb, entry.path, entry.number};
+  if (kind_ == Kind::kLinear) return DisplayImage{read_exr(entry.path, 400'000'000).rgb, entry.path, entry.number};
   return DisplayImage{read_code_image(entry.path), entry.path, entry.number};
 }
 

@@ -99,6 +99,9 @@ std::vector<GazeSample> parse_gaze(const std::string& raw, const std::string& na
   if (s.empty()) throw InputError(name + ": no gaze samples");
   const bool pupil_labs =
       format == GazeFormat::kPupilCore || format == GazeFormat::kNeon || format == GazeFormat::kNeonSurface;
+  if (!pupil_labs && o.blinks != "auto" && o.blinks != "none")
+    throw UsageError("--gaze-blinks " + o.blinks + ": blinks files go with Pupil Core and Neon exports; " + name +
+                     " is not one");
   if (pupil_labs && !o.blinks_text.empty()) {
     const size_t n = apply_blinks(plain_text(o.blinks_text), o.blinks_name, o.recording, s);
     notes.push_back(std::to_string(n) + " blinks from " + o.blinks_name);
@@ -133,10 +136,14 @@ std::vector<GazeSample> read_gaze(const std::string& path, const GazeImportOptio
   if (!text) throw InputError(path + ": cannot open gaze log");
   protect_input(path);
   GazeImportOptions o = options;
-  // Pupil Player and Neon export blinks beside the gaze.
-  const std::filesystem::path blinks = std::filesystem::path(path).parent_path() / "blinks.csv";
-  if (o.blinks_text.empty() && std::filesystem::path(path).filename() != "blinks.csv") {
-    const std::optional<std::string> b = read_text(blinks);
+  // Pupil Player and Neon export blinks beside the gaze; or a named file.
+  if (o.blinks_text.empty() && o.blinks != "none") {
+    const bool beside = o.blinks == "auto";
+    const std::filesystem::path blinks =
+        beside ? std::filesystem::path(path).parent_path() / "blinks.csv" : std::filesystem::path(o.blinks);
+    const std::optional<std::string> b =
+        beside && std::filesystem::path(path).filename() == "blinks.csv" ? std::nullopt : read_text(blinks);
+    if (!b && !beside) throw InputError(o.blinks + ": cannot open the blinks file (--gaze-blinks)");
     if (b) {
       protect_input(blinks.string());
       o.blinks_text = *b;

@@ -33,8 +33,11 @@ struct GazeImportOptions {
   // square root of a unit of pupil area (files whose "PUPIL AREA" line, or
   // no PUPIL line, says they hold areas); 0: the pupil is not read.
   double pupil_scale_mm = 0.0;
-  // Pupil Core and Neon: the blinks.csv beside the export (read_gaze fills
-  // these when it is there); its blinks close the eye.
+  // Pupil Core and Neon blinks: "auto" reads the blinks.csv beside the
+  // export when it is there, "none" reads none, anything else is the path
+  // of the blinks file (an InputError when it cannot be read).
+  std::string blinks = "auto";
+  // The blinks read (read_gaze fills these); they close the eye.
   std::string blinks_text, blinks_name;
 };
 

@@ -12,13 +12,16 @@ extern "C" {
 #include <libswscale/swscale.h>
 }
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <optional>
 #include <opencv2/core.hpp>
+#include <vector>
 
 #include "io/error.hpp"
 #include "io/staged_file.hpp"
+#include "io/transfer_functions.hpp"
 
 namespace eyestream::io {
 
@@ -45,6 +48,12 @@ struct VideoWriter::Impl {
   AVRational rate{};
   int width = 0, height = 0;  // encoded (even) size
   std::int64_t last_pts = -1;
+  std::int64_t frames = 0;
+  // HDR10: the content light level measured from the frames (CTA-861.3):
+  // MaxCLL the brightest pixel's largest component, MaxFALL the largest
+  // frame mean of that component, in cd/m^2.
+  std::vector<float> pq_light;  // 16-bit PQ code -> cd/m^2
+  double max_cll = 0, max_fall = 0;
 
   Impl(const std::string& path, const VideoOptions& o) : name(path == "-" ? "standard output" : path), options(o) {
     if (path != "-") file.emplace(path);
@@ -62,6 +71,9 @@ struct VideoWriter::Impl {
   }
 
   [[noreturn]] void fail(const std::string& what, int code) const {
+    if (code == AVERROR(EPIPE))  // `eyestream run -o - | head`: not a disk problem
+      throw OutputError(name + ": the program reading it closed the pipe " +
+                        (frames > 0 ? "after frame " + std::to_string(frames - 1) : std::string("before any frame")));
     throw OutputError(name + ": " + what + ": " + av_message(code));
   }
 
@@ -155,18 +167,20 @@ struct VideoWriter::Impl {
 
   // x265: quiet, fixed threading (output bytes depend on it), and for
   // HDR10 the mastering display (BT.2020 primaries and D65 in 0.00002
-  // units, luminance in 0.0001 cd/m^2) and content light level in the SEI.
+  // units, luminance in 0.0001 cd/m^2) in the SEI. The content light level
+  // is known only after the last frame, so it goes to the container alone.
   std::string x265_params() const {
     std::string p = "log-level=error:frame-threads=1:pools=" + std::to_string(options.encoder_threads);
     if (options.hdr10) {
       const long peak = std::lround(options.hdr10_peak_cd_m2 * 10000);
       p += ":hdr10=1:repeat-headers=1:master-display=G(8500,39850)B(6550,2300)R(35400,14600)WP(15635,16450)L(" +
-           std::to_string(peak) + ",1):max-cll=" + std::to_string(std::lround(options.hdr10_peak_cd_m2)) + ",0";
+           std::to_string(peak) + ",1)";
     }
     return p;
   }
 
-  // The same metadata for the container.
+  // The same metadata for the container, with a content light level of 0
+  // (unknown) until close() measures it.
   void add_hdr10_side_data() {
     size_t size = 0;
     AVMasteringDisplayMetadata* m = av_mastering_display_metadata_alloc();
@@ -181,9 +195,41 @@ struct VideoWriter::Impl {
     av_stream_add_side_data(stream, AV_PKT_DATA_MASTERING_DISPLAY_METADATA, reinterpret_cast<uint8_t*>(m),
                             sizeof(*m));
     AVContentLightMetadata* cll = av_content_light_metadata_alloc(&size);
-    cll->MaxCLL = unsigned(std::lround(options.hdr10_peak_cd_m2));
-    cll->MaxFALL = 0;
+    cll->MaxCLL = cll->MaxFALL = 0;
     av_stream_add_side_data(stream, AV_PKT_DATA_CONTENT_LIGHT_LEVEL, reinterpret_cast<uint8_t*>(cll), size);
+  }
+
+  void measure_light(const cv::Mat& code) {
+    if (pq_light.empty()) {
+      pq_light.resize(65536);
+      for (int i = 0; i < 65536; ++i) pq_light[i] = float(pq_to_luminance(i / 65535.0));
+    }
+    std::uint16_t brightest = 0;
+    double sum = 0;
+    for (int y = 0; y < code.rows; ++y) {
+      const std::uint16_t* p = code.ptr<std::uint16_t>(y);
+      double row = 0;
+      for (int x = 0; x < code.cols; ++x, p += 3) {
+        const std::uint16_t m = std::max({p[0], p[1], p[2]});
+        brightest = std::max(brightest, m);
+        row += pq_light[m];
+      }
+      sum += row;
+    }
+    max_cll = std::max(max_cll, double(pq_light[brightest]));
+    max_fall = std::max(max_fall, sum / double(code.total()));
+  }
+
+  // The measured content light level into the container's side data, which
+  // the MP4 muxer writes with its index at the end (MKV's track header is
+  // written first and keeps 0, "unknown").
+  void store_light_level() {
+    size_t size = 0;
+    uint8_t* data = av_stream_get_side_data(stream, AV_PKT_DATA_CONTENT_LIGHT_LEVEL, &size);
+    if (!data || size < sizeof(AVContentLightMetadata)) return;
+    auto* cll = reinterpret_cast<AVContentLightMetadata*>(data);
+    cll->MaxCLL = unsigned(std::min(65535L, std::lround(max_cll)));
+    cll->MaxFALL = unsigned(std::min(65535L, std::lround(max_fall)));
   }
 
   void drain() {
@@ -213,6 +259,7 @@ struct VideoWriter::Impl {
     // bytes depend on the frame alone, not on what the heap held before.
     for (AVBufferRef* buf : yuv->buf)
       if (buf) std::memset(buf->data, 0, buf->size);
+    if (options.hdr10) measure_light(code);
     if (options.bit_depth > 8) {  // the standard's arithmetic (ycbcr.hpp), not swscale's 16-bit path
       rgb_to_ycbcr420_10(code, yuv->colorspace, *yuv);
     } else {
@@ -226,6 +273,7 @@ struct VideoWriter::Impl {
     yuv->pts = pts;
     rc = avcodec_send_frame(codec, yuv);
     if (rc < 0) fail("encoding failed", rc);
+    ++frames;
     drain();
   }
 
@@ -234,6 +282,7 @@ struct VideoWriter::Impl {
     int rc = avcodec_send_frame(codec, nullptr);
     if (rc < 0) fail("encoding failed", rc);
     drain();
+    if (options.hdr10) store_light_level();
     rc = av_write_trailer(format);
     if (rc < 0) fail("cannot finalise the video file", rc);
     rc = avio_closep(&format->pb);

@@ -104,8 +104,8 @@ CompareResult compare(const CompareOptions& o) {
   const double warn = o.warn.value_or(o.metric == "visible" ? 0.0 : 0.5);
   const double fail = o.fail.value_or(o.metric == "visible" ? 0.0 : 1.0);
   std::string mismatch;
-  if (a.linear() != b.linear()) mismatch = "A holds " + std::string(a.linear() ? "linear EXR" : "display-coded") +
-                                           " frames and B " + (b.linear() ? "linear EXR" : "display-coded") + " ones";
+  if (a.kind() != b.kind())
+    mismatch = "A holds " + std::string(a.kind_name()) + " frames and B " + b.kind_name() + " ones";
   if (mismatch.empty() && a.frame_count() >= 0 && b.frame_count() >= 0 && a.frame_count() != b.frame_count())
     mismatch = "A has " + std::to_string(a.frame_count()) + " frames, B " + std::to_string(b.frame_count());
   while (mismatch.empty()) {

@@ -35,6 +35,10 @@ ParamSet run_parameters(Settings& s) {
                  {"auto", "native", "pupil-core", "neon", "neon-surface", "tobii", "eyelink"}));
   set.add(text("gaze-recording", "Neon, Tobii: the recording to read when the export holds several", in,
                &s.gaze_recording));
+  set.add(text("gaze-blinks",
+               "Pupil Core, Neon: auto reads the blinks.csv beside the export, none reads no blinks, or the path of "
+               "a blinks file",
+               in, &s.gaze_blinks));
   set.add(number("gaze-pupil-scale", "mm",
                  "EyeLink: millimetres per unit of pupil diameter, or per square root of a unit of pupil area "
                  "(PUPIL AREA files, EyeLink's default); 0: the pupil is not read",
@@ -202,7 +206,7 @@ ParamSet run_parameters(Settings& s) {
   set.add(choice("bit-depth", "video bit depth (10 needs hevc)", out, &s.sink.video.bit_depth, {"8", "10"}));
   set.add(flag("hdr10", "HDR10 video (hevc, 10-bit, PQ, BT.2020); display white is --display-peak cd/m^2", out,
                &s.sink.video.hdr10));
-  set.add(number("hdr10-peak", "cd/m^2", "mastering display peak and MaxCLL written with --hdr10", out,
+  set.add(number("hdr10-peak", "cd/m^2", "mastering display peak written with --hdr10 (MaxCLL and MaxFALL are measured from the frames)", out,
                  &s.sink.video.hdr10_peak_cd_m2, 100, 10000));
   set.add(choice("format", "container of a video on standard output (-o -)", out, &s.sink.video.stream_format,
                  {"mkv", "mp4"}));

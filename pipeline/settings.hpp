@@ -31,6 +31,7 @@ struct Settings {
   double gaze_offset_s = 0.0;
   std::optional<double> gaze_sync_s;
   std::string gaze_sync_message;  // EyeLink: the first MSG holding this text is frame 0
+  std::string gaze_blinks = "auto";  // Pupil Core, Neon: auto (beside the export), none, or a path
   std::string gaze_recording;     // Neon, Tobii: the recording to read of several
   std::string gaze_eye = "average";  // EyeLink binocular: left, right or average
   double gaze_confidence = 0.6;

@@ -13,6 +13,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   zlib1g-dev  # the tests check PNG chunk CRCs with zlib (an independent CRC-32)
   python3-dev pybind11-dev python3-numpy  # the Python module (python/) and its tests
+  ffmpeg  # the tests cross-check HDR video luminance with its zscale filter (zimg), an independent decoder
 )
 
 missing=()

@@ -92,6 +92,39 @@ TEST(GazeExports, BlinksBesideTheExportCloseTheEye) {
   EXPECT_EQ(n[2].state, EyeState::kOpen);
 }
 
+// A blinks.csv that does not belong to the export is left out with
+// --gaze-blinks none; one kept elsewhere is named by its path.
+TEST(GazeExports, BlinksCanBeLeftOutOrNamed) {
+  test::ScratchDir dir;
+  write(dir / "gaze_positions.csv", "gaze_timestamp,world_index,confidence,norm_pos_x,norm_pos_y,base_data\n"
+                                    "100.00,0,0.9,0.5,0.5,x\n100.10,1,0.9,0.5,0.5,x\n100.20,2,0.9,0.5,0.5,x\n");
+  const std::string blinks = "id,start_timestamp,duration,end_timestamp,start_frame_index,index,end_frame_index,"
+                             "confidence,filter_response,base_data\n1,100.05,0.1,100.15,1,1,1,0.8,0.5 0.6,x\n";
+  write(dir / "blinks.csv", blinks);
+  GazeImportOptions none = frame_1000x500();
+  none.blinks = "none";
+  const auto kept_open = read_gaze(dir / "gaze_positions.csv", none);
+  ASSERT_EQ(kept_open.size(), 3u);
+  EXPECT_EQ(kept_open[1].state, EyeState::kOpen) << "--gaze-blinks none reads no blinks";
+
+  test::ScratchDir elsewhere;
+  write(elsewhere / "gaze_positions.csv", "gaze_timestamp,world_index,confidence,norm_pos_x,norm_pos_y,base_data\n"
+                                          "100.00,0,0.9,0.5,0.5,x\n100.10,1,0.9,0.5,0.5,x\n");
+  GazeImportOptions named = frame_1000x500();
+  named.blinks = dir / "blinks.csv";
+  const auto closed = read_gaze(elsewhere / "gaze_positions.csv", named);
+  ASSERT_EQ(closed.size(), 2u);
+  EXPECT_EQ(closed[1].state, EyeState::kClosed) << "the named blinks file is read";
+
+  named.blinks = dir / "missing.csv";
+  try {
+    read_gaze(elsewhere / "gaze_positions.csv", named);
+    ADD_FAILURE() << "a missing blinks file must be refused";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("missing.csv"), std::string::npos) << e.what();
+  }
+}
+
 // Pupil Cloud's Marker Mapper: the surface (the display watched) from its
 // top left (0, 0) to its bottom right (1, 1); empty where it was not found.
 const std::string kSurface =

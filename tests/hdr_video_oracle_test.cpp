@@ -193,5 +193,31 @@ TEST(HdrVideoOracle, Hdr10OutputHoldsTheCodesOfTheLuminanceItMeant) {
   }
 }
 
+// `compare` decodes PQ videos to light: two lossless clips whose codes mean
+// 100 and 150 cd/m^2 differ by 50 cd/m^2 over the 203 cd/m^2 reference
+// white (BT.2408), the codes' own values computed here. An HDR clip against
+// an SDR one is refused as a mismatch.
+TEST(HdrVideoOracle, CompareDecodesPqVideosToLight) {
+  test::ScratchDir dir;
+  const int a = luma_code(100.0), b = luma_code(150.0);
+  ASSERT_TRUE(write_clip(dir / "a.mkv", {a}, AVCOL_TRC_SMPTE2084));
+  ASSERT_TRUE(write_clip(dir / "b.mkv", {b}, AVCOL_TRC_SMPTE2084));
+  ASSERT_TRUE(write_clip(dir / "sdr.mkv", {a}, AVCOL_TRC_BT709));
+  const auto r = test::run_eyestream("compare " + (dir / "a.mkv") + " " + (dir / "b.mkv") + " --metric max --warn 0 --fail 0.1 --json " +
+                                     (dir / "r.json"));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  const std::string json = test::read_bytes(dir / "r.json");
+  const size_t at = json.find("\"max_abs\"");
+  ASSERT_NE(at, std::string::npos) << json;
+  const double max_abs = std::stod(json.substr(json.find(':', at) + 1));
+  const double want = (code_luminance(b) - code_luminance(a)) / 203.0;
+  EXPECT_NEAR(max_abs / want, 1.0, 0.002) << r.output;
+  const auto same = test::run_eyestream("compare " + (dir / "a.mkv") + " " + (dir / "a.mkv"));
+  EXPECT_EQ(same.exit_code, 0) << same.output;
+  const auto mixed = test::run_eyestream("compare " + (dir / "a.mkv") + " " + (dir / "sdr.mkv"));
+  EXPECT_EQ(mixed.exit_code, 2) << mixed.output;
+  EXPECT_NE(mixed.output.find("PQ/HLG video (light)"), std::string::npos) << mixed.output;
+}
+
 }  // namespace
 }  // namespace eyestream

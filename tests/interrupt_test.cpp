@@ -89,5 +89,21 @@ TEST_F(Interrupts, BeforeTheFirstWrittenFrameNothingIsKept) {
   EXPECT_TRUE(names_in(dir.path() / "out").empty());
 }
 
+// `eyestream run -o - | head`: the reader goes away; one line says so
+// (not "disk full"), the exit is 4 (output), and nothing is left behind.
+TEST_F(Interrupts, AReaderClosingStandardOutputIsOneLineAndExitFour) {
+  const std::string log = dir / "err.txt";
+  const std::string command = "bash -c '" + std::string(EYESTREAM_BINARY) + " " + input() + " -o - 2>" + log +
+                              " | head -c 100 >/dev/null; exit ${PIPESTATUS[0]}'";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 4);
+  const std::string err = test::read_bytes(log);
+  EXPECT_NE(err.find("eyestream: error: standard output: the program reading it closed the pipe after frame "),
+            std::string::npos)
+      << err;
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+}
+
 }  // namespace
 }  // namespace eyestream
