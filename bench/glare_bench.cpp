@@ -5,9 +5,9 @@
 // display peak, plus the one-time kernel build with and without flare lines.
 #include <benchmark/benchmark.h>
 
-#include "pipeline/frame_buffer_pool.hpp"
-#include "pipeline/glare_stage.hpp"
-#include "pipeline/quality_presets.hpp"
+#include "pipeline/eye/frame_buffer_pool.hpp"
+#include "pipeline/eye/glare_stage.hpp"
+#include "pipeline/settings/quality_presets.hpp"
 
 namespace {
 

@@ -5,7 +5,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "pipeline/frame_projection.hpp"
+#include "pipeline/geometry/frame_projection.hpp"
 
 namespace {
 

@@ -4,7 +4,7 @@
 // frame pixels, so items/s reads as pixels/s.
 #include <benchmark/benchmark.h>
 
-#include "pipeline/eye_simulator.hpp"
+#include "pipeline/eye/eye_simulator.hpp"
 
 namespace {
 

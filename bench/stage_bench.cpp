@@ -6,7 +6,7 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "pipeline/frame_buffer_pool.hpp"
+#include "pipeline/eye/frame_buffer_pool.hpp"
 #include "retina/acuity_loss.hpp"
 #include "retina/display_encoding.hpp"
 #include "retina/luminance_field.hpp"

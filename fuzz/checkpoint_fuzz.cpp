@@ -11,8 +11,8 @@
 
 #include "fuzz/fuzz_file.hpp"
 #include "io/error.hpp"
-#include "pipeline/checkpoint.hpp"
-#include "pipeline/eye_simulator.hpp"
+#include "pipeline/run/checkpoint.hpp"
+#include "pipeline/eye/eye_simulator.hpp"
 
 using namespace eyestream;
 

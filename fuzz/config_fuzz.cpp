@@ -6,8 +6,8 @@
 #include <string>
 
 #include "io/error.hpp"
-#include "pipeline/parameter.hpp"
-#include "pipeline/settings.hpp"
+#include "pipeline/settings/parameter.hpp"
+#include "pipeline/settings/settings.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const nlohmann::json config = nlohmann::json::parse(data, data + size, nullptr, false);

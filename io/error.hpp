@@ -1,5 +1,5 @@
 // Error classes raised by eyestream's modules. The program maps each class
-// to its own exit code (see pipeline/exit_codes.hpp); the message is one line
+// to its own exit code (see pipeline/run/exit_codes.hpp); the message is one line
 // that names the culprit (file and frame, gaze line, or parameter).
 #pragma once
 

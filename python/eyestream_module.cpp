@@ -11,9 +11,9 @@
 #include <mutex>
 #include <sstream>
 
-#include "pipeline/parameter.hpp"
-#include "pipeline/quality_presets.hpp"
-#include "pipeline/settings.hpp"
+#include "pipeline/settings/parameter.hpp"
+#include "pipeline/settings/quality_presets.hpp"
+#include "pipeline/settings/settings.hpp"
 
 namespace py = pybind11;
 
@@ -85,6 +85,7 @@ cv::Mat from_numpy(const py::handle& object) {
 // released while a frame is processed, so another thread may call in; the
 // lock keeps each eye's calls one after another.
 struct PyEye {
+  explicit PyEye(Eye e) : eye(std::move(e)) {}
   Eye eye;
   eyestream::Frame last;
   mutable std::mutex busy;
@@ -160,7 +161,7 @@ struct PyEye {
 };
 
 // The run command's parameters as the keywords take them, from the table
-// that makes the command line (pipeline/settings.hpp), at their defaults
+// that makes the command line (pipeline/settings/settings.hpp), at their defaults
 // under `quality`.
 std::vector<eyestream::pipeline::Param> parameters_of(eyestream::pipeline::Settings& s, const std::string& quality) {
   eyestream::pipeline::apply_quality_preset(quality, s);
@@ -207,7 +208,7 @@ PYBIND11_MODULE(eyestream, m) {
       .def(py::init([](int width, int height, double fps, const py::kwargs& settings) {
              std::map<std::string, std::string> named;
              for (const auto& [k, v] : settings) named[k.cast<std::string>()] = setting_text(v);
-             return new PyEye{Eye(width, height, fps, named), {}};
+             return new PyEye(Eye(width, height, fps, named));
            }),
            py::arg("width"), py::arg("height"), py::arg("fps"))
       .def("process", &PyEye::process, py::arg("frame"), py::arg("gaze") = py::none(),

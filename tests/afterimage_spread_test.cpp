@@ -6,8 +6,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "pipeline/eye_simulator.hpp"
-#include "pipeline/quality_presets.hpp"
+#include "pipeline/eye/eye_simulator.hpp"
+#include "pipeline/settings/quality_presets.hpp"
 #include "retina/diffusion.hpp"
 #include "tests/test_support.hpp"
 

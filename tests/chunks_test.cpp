@@ -6,7 +6,7 @@
 
 #include "io/error.hpp"
 #include "io/video_reader.hpp"
-#include "pipeline/chunk_plan.hpp"
+#include "pipeline/run/chunk_plan.hpp"
 #include "tests/test_support.hpp"
 
 namespace eyestream {

@@ -3,8 +3,8 @@
 // drift from the command line.
 #include <gtest/gtest.h>
 
-#include "pipeline/parameter.hpp"
-#include "pipeline/settings.hpp"
+#include "pipeline/settings/parameter.hpp"
+#include "pipeline/settings/settings.hpp"
 #include "tests/test_support.hpp"
 
 namespace eyestream {

@@ -1,4 +1,4 @@
-#include "pipeline/eye_simulator.hpp"
+#include "pipeline/eye/eye_simulator.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // written out in the test (true_angle_oracle.hpp): distances from the
 // centre are true angles, local scales and solid angles are the camera's,
 // and carrying a frame into the plane keeps its light.
-#include "pipeline/frame_projection.hpp"
+#include "pipeline/geometry/frame_projection.hpp"
 
 #include <gtest/gtest.h>
 

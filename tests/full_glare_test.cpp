@@ -5,7 +5,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "pipeline/glare_stage.hpp"
+#include "pipeline/eye/glare_stage.hpp"
 #include "retina/luminance.hpp"
 #include "tests/test_support.hpp"
 

@@ -1,4 +1,4 @@
-#include "pipeline/gaze_timeline.hpp"
+#include "pipeline/eye/gaze_timeline.hpp"
 
 #include <gtest/gtest.h>
 

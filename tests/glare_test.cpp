@@ -9,7 +9,7 @@
 #include "glare/psf_weights.hpp"
 #include "glare/pupil.hpp"
 #include "glare/vos_psf.hpp"
-#include "pipeline/glare_stage.hpp"
+#include "pipeline/eye/glare_stage.hpp"
 #include "tests/test_support.hpp"
 
 namespace eyestream::glare {

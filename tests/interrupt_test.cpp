@@ -1,4 +1,4 @@
-// Interrupts (pipeline/interrupts.hpp): a run stopped by SIGINT or SIGTERM
+// Interrupts (pipeline/run/interrupts.hpp): a run stopped by SIGINT or SIGTERM
 // keeps what it made, playable and complete, leaves no temporary, exits
 // 128 + the signal, and a checkpointed run resumes from where it stopped
 // to the bytes of an uninterrupted run. The signals are real (raised in

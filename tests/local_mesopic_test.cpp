@@ -7,7 +7,7 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
-#include "pipeline/eye_simulator.hpp"
+#include "pipeline/eye/eye_simulator.hpp"
 #include "tests/test_support.hpp"
 
 namespace eyestream::pipeline {

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
-#include "pipeline/eye_simulator.hpp"
-#include "pipeline/mesopic_stage.hpp"
+#include "pipeline/eye/eye_simulator.hpp"
+#include "pipeline/eye/mesopic_stage.hpp"
 #include "retina/smooth_noise.hpp"
 #include "samples/dusk.hpp"
 #include "tests/test_support.hpp"

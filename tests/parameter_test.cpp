@@ -1,4 +1,4 @@
-#include "pipeline/parameter.hpp"
+#include "pipeline/settings/parameter.hpp"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <fstream>
 
 #include "io/error.hpp"
-#include "pipeline/settings.hpp"
+#include "pipeline/settings/settings.hpp"
 #include "tests/test_support.hpp"
 
 namespace eyestream::pipeline {

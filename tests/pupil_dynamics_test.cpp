@@ -8,7 +8,7 @@
 
 #include "glare/pupil.hpp"
 #include "glare/pupil_dynamics.hpp"
-#include "pipeline/eye_simulator.hpp"
+#include "pipeline/eye/eye_simulator.hpp"
 #include "tests/test_support.hpp"
 
 namespace eyestream::pipeline {

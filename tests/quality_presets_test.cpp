@@ -5,10 +5,10 @@
 
 #include <iostream>
 
-#include "pipeline/bench_case.hpp"
-#include "pipeline/bench_scene.hpp"
-#include "pipeline/quality_presets.hpp"
-#include "pipeline/reference_error.hpp"
+#include "pipeline/tools/bench_case.hpp"
+#include "pipeline/tools/bench_scene.hpp"
+#include "pipeline/settings/quality_presets.hpp"
+#include "pipeline/tools/reference_error.hpp"
 
 namespace eyestream::pipeline {
 namespace {

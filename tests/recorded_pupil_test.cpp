@@ -13,7 +13,7 @@
 
 #include "io/exr_file.hpp"
 #include "io/gaze_import.hpp"
-#include "pipeline/gaze_timeline.hpp"
+#include "pipeline/eye/gaze_timeline.hpp"
 #include "tests/test_support.hpp"
 
 namespace eyestream {

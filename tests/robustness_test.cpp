@@ -6,7 +6,7 @@
 #include <fstream>
 
 #include "io/exr_file.hpp"
-#include "pipeline/eye_simulator.hpp"
+#include "pipeline/eye/eye_simulator.hpp"
 #include "tests/test_support.hpp"
 
 namespace eyestream {

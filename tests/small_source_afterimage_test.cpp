@@ -12,8 +12,8 @@
 #include <cstdio>
 #include <opencv2/imgproc.hpp>
 
-#include "pipeline/eye_simulator.hpp"
-#include "pipeline/quality_presets.hpp"
+#include "pipeline/eye/eye_simulator.hpp"
+#include "pipeline/settings/quality_presets.hpp"
 #include "tests/test_support.hpp"
 
 namespace eyestream::pipeline {

@@ -5,7 +5,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "io/error.hpp"
-#include "pipeline/target_region.hpp"
+#include "pipeline/eye/target_region.hpp"
 #include "tests/test_support.hpp"
 
 namespace eyestream {

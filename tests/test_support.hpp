@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/plan.hpp"
+#include "pipeline/settings/plan.hpp"
 
 namespace eyestream::test {
 

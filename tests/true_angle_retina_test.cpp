@@ -12,7 +12,7 @@
 #include "glare/pupil.hpp"
 #include "io/exr_file.hpp"
 #include "io/gaze_csv.hpp"
-#include "pipeline/eye_simulator.hpp"
+#include "pipeline/eye/eye_simulator.hpp"
 #include "tests/test_support.hpp"
 #include "tests/true_angle_oracle.hpp"
 

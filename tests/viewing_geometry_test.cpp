@@ -1,4 +1,4 @@
-#include "pipeline/viewing_geometry.hpp"
+#include "pipeline/geometry/viewing_geometry.hpp"
 
 #include <gtest/gtest.h>
 

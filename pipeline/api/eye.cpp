@@ -6,12 +6,12 @@
 
 #include "io/error.hpp"
 #include "io/frame_source.hpp"
-#include "pipeline/eye_simulator.hpp"
-#include "pipeline/gaze_timeline.hpp"
-#include "pipeline/parameter.hpp"
-#include "pipeline/plan.hpp"
-#include "pipeline/quality_presets.hpp"
-#include "pipeline/settings.hpp"
+#include "pipeline/eye/eye_simulator.hpp"
+#include "pipeline/eye/gaze_timeline.hpp"
+#include "pipeline/settings/parameter.hpp"
+#include "pipeline/settings/plan.hpp"
+#include "pipeline/settings/quality_presets.hpp"
+#include "pipeline/settings/settings.hpp"
 #include "retina/display_encoding.hpp"
 
 namespace eyestream {

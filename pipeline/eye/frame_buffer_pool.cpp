@@ -1,0 +1,104 @@
+#include "pipeline/eye/frame_buffer_pool.hpp"
+
+#include <cstdlib>
+#include <map>
+#include <mutex>
+#include <opencv2/core.hpp>
+#include <vector>
+
+namespace eyestream::pipeline {
+
+namespace {
+
+constexpr size_t kPooledFrom = 256 * 1024;  // smaller buffers: malloc reuses them well already
+constexpr size_t kAlignment = 64;           // as OpenCV's own allocator
+
+// A cv::MatAllocator that pools freed buffers by exact size. The loop's
+// sizes repeat frame after frame, so the pool holds about one frame's
+// working set; a size never asked for again stays pooled until exit (a run
+// has few distinct sizes).
+class FrameBufferPool final : public cv::MatAllocator {
+ public:
+  cv::UMatData* allocate(int dims, const int* sizes, int type, void* data0, size_t* step, cv::AccessFlag,
+                         cv::UMatUsageFlags) const override {
+    size_t total = CV_ELEM_SIZE(type);
+    for (int i = dims - 1; i >= 0; --i) {
+      if (step) {
+        if (data0 && step[i] != cv::Mat::AUTO_STEP) {
+          CV_Assert(total <= step[i]);
+          total = step[i];
+        } else {
+          step[i] = total;
+        }
+      }
+      total *= size_t(sizes[i]);
+    }
+    auto* u = new cv::UMatData(this);
+    u->data = u->origdata = data0 ? static_cast<uchar*>(data0) : take(total);
+    u->size = total;
+    if (data0) u->flags |= cv::UMatData::USER_ALLOCATED;
+    return u;
+  }
+
+  bool allocate(cv::UMatData* u, cv::AccessFlag, cv::UMatUsageFlags) const override { return u != nullptr; }
+
+  void deallocate(cv::UMatData* u) const override {
+    if (!u) return;
+    CV_Assert(u->urefcount == 0 && u->refcount == 0);
+    if (!(u->flags & cv::UMatData::USER_ALLOCATED)) give_back(u->origdata, u->size);
+    delete u;
+  }
+
+  size_t pooled() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return pooled_;
+  }
+
+ private:
+  uchar* take(size_t bytes) const {
+    if (bytes >= kPooledFrom) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      auto it = free_.find(bytes);
+      if (it != free_.end() && !it->second.empty()) {
+        void* p = it->second.back();
+        it->second.pop_back();
+        pooled_ -= bytes;
+        return static_cast<uchar*>(p);
+      }
+    }
+    void* p = nullptr;
+    if (posix_memalign(&p, kAlignment, bytes == 0 ? kAlignment : bytes) != 0) throw std::bad_alloc();
+    return static_cast<uchar*>(p);
+  }
+
+  void give_back(void* p, size_t bytes) const {
+    if (bytes < kPooledFrom) {
+      std::free(p);
+      return;
+    }
+    std::lock_guard<std::mutex> lock(mutex_);
+    free_[bytes].push_back(p);
+    pooled_ += bytes;
+  }
+
+  mutable std::mutex mutex_;
+  mutable std::map<size_t, std::vector<void*>> free_;
+  mutable size_t pooled_ = 0;
+};
+
+// Never destroyed: Mats released during static destruction still find it.
+FrameBufferPool& pool() {
+  static auto* p = new FrameBufferPool;
+  return *p;
+}
+
+}  // namespace
+
+void reuse_frame_buffers() {
+  static std::once_flag once;
+  std::call_once(once, [] { cv::Mat::setDefaultAllocator(&pool()); });
+}
+
+size_t pooled_frame_buffer_bytes() { return pool().pooled(); }
+
+}  // namespace eyestream::pipeline

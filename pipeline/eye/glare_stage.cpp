@@ -1,0 +1,249 @@
+#include "pipeline/eye/glare_stage.hpp"
+
+#include <cstring>
+#include <opencv2/imgproc.hpp>
+
+#include "glare/uniform_field.hpp"
+#include "glare/veiling_luminance.hpp"
+#include "retina/luminance.hpp"
+
+namespace eyestream::pipeline {
+
+namespace {
+
+// Halved when the plane has at most half the frame's px/deg (and the frame
+// is big enough to halve).
+cv::Size halved_frame(const Plan& plan) {
+  if (plan.glare.plane_scale > 0.5 || plan.width < 64 || plan.height < 64) return {};
+  // An equidistant plane at exactly half would be the halved frame itself.
+  if (plan.projection->kind() == Projection::equidistant && plan.glare.plane_scale == 0.5) return {};
+  return {(plan.width + 1) / 2, (plan.height + 1) / 2};
+}
+
+std::shared_ptr<const FrameProjection> glare_plane(const Plan& plan) {
+  const cv::Size halved = halved_frame(plan);
+  if (!halved.empty())  // the halved frame spans the same angles at half the pixels per degree
+    return std::make_shared<const FrameProjection>(halved.width, halved.height, plan.fov_deg, plan.projection->kind(),
+                                                   2.0 * plan.glare.plane_scale);
+  if (plan.glare.plane_scale == 1.0) return plan.projection;
+  return std::make_shared<const FrameProjection>(plan.width, plan.height, plan.fov_deg, plan.projection->kind(),
+                                                 plan.glare.plane_scale);
+}
+
+}  // namespace
+
+GlareStage::GlareStage(const Plan& plan)
+    : plan_(plan),
+      optics_(plan.eye_optics()),
+      halved_(halved_frame(plan)),
+      plane_(glare_plane(plan)),
+      ppd_(plane_->pixels_per_degree()) {
+  const cv::Size plane = plane_->plane_size();
+  if (plan.glare.gaussian) {  // no kernels: a separable blur does the work
+    const double sigma = plan.glare.gaussian_sigma_deg * ppd_;
+    const cv::Mat g = cv::getGaussianKernel(cvRound(sigma * 8 + 1) | 1, sigma, CV_64F);  // GaussianBlur's, for floats
+    const double centre = g.at<double>(g.rows / 2) * g.at<double>(g.rows / 2);
+    for (cv::Vec3d& c : centre_) c = cv::Vec3d::all(centre);
+    if (plan.glare.full)
+      in_frame_.push_back(spread(cv::Mat(plan.height, plan.width, CV_32FC3, cv::Scalar::all(1.0)), {}));
+    return;
+  }
+  // The full kernels also give the report its veil (veiling_luminance.hpp).
+  // On an angle plane the engines spread only the light that leaves its
+  // pixel (their kernels' centre pixel 0); the rest stays on the frame's
+  // pixels (spread()).
+  const bool with_centre = plane_->identity();
+  const glare::ComponentKernels centre = glare::build_component_kernels(1, 1, ppd_, optics_);
+  for (int ch = 0; ch < 3; ++ch) {
+    centre_[0][ch] = centre.core.at<double>(0, 0);
+    centre_[1][ch] = centre.inner.at<double>(0, 0);
+    centre_[2][ch] = centre.outer.at<double>(0, 0);
+    centre_[3][ch] = centre.halo[ch].at<double>(0, 0);
+  }
+  if (plan.glare.tail_factor <= 1 || plan.report)
+    kernels_ = glare::build_component_kernels(plane.width, plane.height, ppd_, optics_);
+  if (plan.glare.tail_factor > 1) {
+    split_ = std::make_unique<glare::SplitConvolver>(plane.width, plane.height, ppd_,
+                                                     plan.glare.tail_factor, optics_, with_centre);
+  } else {
+    // The engine copies the kernels' spectra: the centre is dropped for it
+    // and put back for the report.
+    const cv::Point c = kernels_.centre();
+    cv::Mat* ks[6] = {&kernels_.core, &kernels_.inner, &kernels_.outer,
+                      &kernels_.halo[0], &kernels_.halo[1], &kernels_.halo[2]};
+    double kept[6];
+    for (int i = 0; i < 6; ++i) {
+      kept[i] = ks[i]->at<double>(c);
+      if (!with_centre) ks[i]->at<double>(c) = 0.0;
+    }
+    convolver_ = std::make_unique<glare::FftConvolver>(kernels_);
+    for (int i = 0; i < 6; ++i) ks[i]->at<double>(c) = kept[i];
+  }
+  if (!plan.glare.full) return;
+  // The in-frame share of each component, by the engine itself, so that a
+  // uniform scene and surround come out uniform to the engine's rounding.
+  const cv::Mat ones(plan.height, plan.width, CV_32FC3, cv::Scalar::all(1.0));
+  for (int c = 0; c < 4; ++c) {
+    glare::PsfWeights w;
+    (c == 0 ? w.core : c == 1 ? w.inner : c == 2 ? w.outer : w.halo) = 1.0;
+    in_frame_.push_back(spread(ones, w));
+  }
+}
+
+std::optional<double> GlareStage::veil_at(const cv::Mat& luminance, double adaptation_log, double pupil_mm, double x,
+                                          double y, double exclusion_deg) const {
+  if (plan_.glare.gaussian || kernels_.core.empty()) return std::nullopt;
+  const glare::PsfWeights w = optics_.weights(adaptation_log, pupil_mm);
+  const double exclusion_px = exclusion_deg * ppd_;
+  const FrameProjection& p = *plane_;
+  if (p.identity()) return glare::veiling_luminance(luminance, kernels_, w, x, y, exclusion_px);
+  // On the angle plane (each pixel's luminance times its solid angle),
+  // between the four plane pixels around the point, as the picture is.
+  const cv::Mat frame = to_glare_frame(luminance);
+  const cv::Point2d at = p.to_plane({x * frame.cols / luminance.cols, y * frame.rows / luminance.rows});
+  return glare::veiling_luminance_between(p.to_plane_flux(frame), kernels_, w, at.x, at.y, exclusion_px);
+}
+
+cv::Mat GlareStage::to_glare_frame(const cv::Mat& frame) const {
+  if (halved_.empty() || frame.size() == halved_) return frame;
+  cv::Mat out;
+  cv::resize(frame, out, halved_, 0, 0, cv::INTER_AREA);
+  return out;
+}
+
+cv::Vec3f GlareStage::kept_share(const glare::PsfWeights& w) const {
+  const cv::Vec3d k = w.core * centre_[0] + w.inner * centre_[1] + w.outer * centre_[2] + w.halo * centre_[3];
+  return plan_.glare.gaussian ? cv::Vec3f::all(float(centre_[0][0])) : cv::Vec3f(float(k[0]), float(k[1]), float(k[2]));
+}
+
+cv::Mat GlareStage::spread(const cv::Mat& rgb, const glare::PsfWeights& w) const {
+  const FrameProjection& p = *plane_;
+  if (p.identity()) return spread_plane(rgb, w);
+  // The plane carries the light that leaves its pixel; the light the PSF
+  // keeps there stays on the frame's pixels, sharp.
+  const cv::Vec3f kept = kept_share(w);
+  const cv::Mat flux = p.to_plane_flux(to_glare_frame(rgb));
+  cv::Mat scattered = spread_plane(flux, w);
+  if (plan_.glare.gaussian) {  // a blur keeps its centre: take it out
+    cv::Mat centre;
+    cv::multiply(flux, cv::Scalar(kept[0], kept[1], kept[2]), centre);
+    scattered -= centre;
+    scattered = cv::max(scattered, 0.0);
+  }
+  cv::Mat out = p.to_frame_image(scattered);
+  if (out.size() != rgb.size()) cv::resize(out, out, rgb.size(), 0, 0, cv::INTER_LINEAR);
+  cv::parallel_for_(cv::Range(0, out.rows), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      cv::Vec3f* o = out.ptr<cv::Vec3f>(y);
+      const cv::Vec3f* in = rgb.ptr<cv::Vec3f>(y);
+      for (int x = 0; x < out.cols; ++x) o[x] += kept.mul(in[x]);
+    }
+  });
+  return out;
+}
+
+cv::Mat GlareStage::spread_plane(const cv::Mat& rgb, const glare::PsfWeights& w) const {
+  if (plan_.glare.gaussian) {
+    // Yoshida et al. 2008: a Gaussian of sigma 0.34 deg; light leaving the frame is lost.
+    const double sigma = plan_.glare.gaussian_sigma_deg * ppd_;
+    cv::Mat out;
+    cv::GaussianBlur(rgb, out, cv::Size(0, 0), sigma, sigma, cv::BORDER_CONSTANT);
+    return out;
+  }
+  return split_ ? split_->convolve(rgb, w) : convolver_->convolve(rgb, w);
+}
+
+void GlareStage::add_surround(cv::Mat& retinal, const glare::PsfWeights& w, double surround) const {
+  if (!(surround > 0.0)) return;
+  const float s = float(surround);
+  const float weights[4] = {float(w.core), float(w.inner), float(w.outer), float(w.halo)};
+  const size_t n = in_frame_.size();
+  cv::parallel_for_(cv::Range(0, retinal.rows), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      cv::Vec3f* out = retinal.ptr<cv::Vec3f>(y);
+      const cv::Vec3f* m[4] = {};
+      for (size_t c = 0; c < n; ++c) m[c] = in_frame_[c].ptr<cv::Vec3f>(y);
+      for (int x = 0; x < retinal.cols; ++x) {
+        cv::Vec3f inside = n == 1 ? m[0][x] : cv::Vec3f(0, 0, 0);
+        if (n == 4)
+          for (int c = 0; c < 4; ++c) inside += weights[c] * m[c][x];
+        for (int k = 0; k < 3; ++k) out[x][k] += s * std::max(0.0f, 1.0f - inside[k]);
+      }
+    }
+  });
+}
+
+bool GlareStage::Cache::matches(const cv::Mat& rgb, const glare::PsfWeights& w, double s) const {
+  if (scene.empty() || scene.size() != rgb.size() || w.core != weights.core || w.inner != weights.inner ||
+      w.outer != weights.outer || w.halo != weights.halo || s != surround)
+    return false;
+  const size_t row_bytes = size_t(rgb.cols) * rgb.elemSize();
+  for (int y = 0; y < rgb.rows; ++y)
+    if (std::memcmp(rgb.ptr(y), scene.ptr(y), row_bytes) != 0) return false;
+  return true;
+}
+
+void GlareStage::Cache::keep(const cv::Mat& rgb, const glare::PsfWeights& w, double s, const cv::Mat& out) {
+  rgb.copyTo(scene);
+  weights = w;
+  surround = s;
+  retinal = out;
+}
+
+cv::Mat GlareStage::apply(const cv::Mat& rgb, double adaptation_log, double surround, double pupil_mm,
+                          bool* ran, bool* reused) {
+  if (reused) *reused = false;
+  // The optics' inputs are quantised (1e-4 log10 units, 1e-3 mm: weight
+  // changes below 1e-5), so a still frame reuses its glare until they move,
+  // and a run resumed from a checkpoint computes exactly what it reused.
+  const double a = std::round(adaptation_log * 1e4) / 1e4;
+  const glare::PsfWeights w =
+      pupil_mm > 0.0 ? optics_.weights(a, std::round(pupil_mm * 1e3) / 1e3) : optics_.weights(a);
+  if (plan_.glare.full) {
+    // A uniform field (and surround) comes back as it is, within
+    // kUniformTolerance; a frame and optics equal to the last ones give the
+    // last result.
+    const bool uniform = glare::is_uniform_field(rgb, surround, kUniformTolerance);
+    if (plan_.skip && uniform) {
+      if (ran) *ran = false;
+      return rgb;
+    }
+    if (plan_.skip && cache_.matches(rgb, w, surround)) {
+      if (ran) *ran = false;
+      if (reused) *reused = true;
+      return cache_.retinal;
+    }
+    if (ran) *ran = true;
+    cv::Mat out = spread(rgb, w);
+    add_surround(out, w, surround);
+    if (plan_.skip) cache_.keep(rgb, w, surround, out);
+    return out;
+  }
+  // The excess over the display peak, with the pixel's colour (Spencer et
+  // al. 1995 sec. 3.2; Yoshida et al. 2008): dL = max(L - L_dmax, 0),
+  // spread, added back.
+  const float peak = float(plan_.glare.display_peak_cd_m2);
+  cv::Mat excess(rgb.size(), CV_32FC3), kept(rgb.size(), CV_32FC3);
+  std::vector<unsigned char> row_has(size_t(rgb.rows), 0);
+  cv::parallel_for_(cv::Range(0, rgb.rows), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      const cv::Vec3f* in = rgb.ptr<cv::Vec3f>(y);
+      cv::Vec3f* e = excess.ptr<cv::Vec3f>(y);
+      cv::Vec3f* k = kept.ptr<cv::Vec3f>(y);
+      for (int x = 0; x < rgb.cols; ++x) {
+        const float l = retina::photopic_luminance(in[x]);
+        const float share = l > peak ? (l - peak) / l : 0.0f;
+        e[x] = in[x] * share;
+        k[x] = in[x] - e[x];
+        row_has[size_t(y)] |= share > 0.0f;
+      }
+    }
+  });
+  const bool any = std::any_of(row_has.begin(), row_has.end(), [](unsigned char v) { return v != 0; });
+  if (ran) *ran = any;
+  if (!any && plan_.skip) return rgb;
+  if (ran) *ran = true;
+  return kept + spread(excess, w);
+}
+
+}  // namespace eyestream::pipeline

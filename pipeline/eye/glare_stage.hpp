@@ -1,0 +1,96 @@
+// The eye's optics: turns the scene into the retinal image the retina sees
+// (Spencer et al. 1995, Yoshida et al. 2008). Bright veils then also adapt and bleach.
+#pragma once
+
+#include <memory>
+#include <opencv2/core.hpp>
+#include <optional>
+
+#include "glare/fft_convolver.hpp"
+#include "glare/split_convolver.hpp"
+#include "glare/psf_kernel.hpp"
+#include "pipeline/settings/plan.hpp"
+
+namespace eyestream::pipeline {
+
+class GlareStage {
+ public:
+  // Builds the component kernels and their spectra once for the sequence.
+  explicit GlareStage(const Plan& plan);
+
+  // The retinal image of `rgb` (finite, cd/m^2) for a viewer adapted to
+  // 10^adaptation_log with the pupil `pupil_mm` (0: the pupil of that
+  // adaptation level). Mode "full" (the default) is the eye: the whole image
+  // goes through the PSF, and the surround (surround_cd_m2, everything
+  // beyond the frame) scatters in, so a uniform field stays uniform up to
+  // the frame's edge. Unless the plan says not to skip, a uniform field
+  // (uniform_field.hpp, within kUniformTolerance) is returned as it is, and
+  // a frame equal to the last one, with the same optics (adaptation and
+  // pupil quantised to 1e-4 log10 units and 1e-3 mm), returns the last
+  // result; *ran is false then (and *reused true for the reuse).
+  cv::Mat apply(const cv::Mat& rgb, double adaptation_log, double surround_cd_m2, double pupil_mm = 0.0,
+                bool* ran = nullptr, bool* reused = nullptr);
+
+  // The error bound of skipping a uniform field (relative).
+  static constexpr double kUniformTolerance = 1e-3;
+
+  // The veiling luminance (cd/m^2) at (x, y) from the light more than
+  // exclusion_deg away (glare/veiling_luminance.hpp), for the viewer at
+  // this adaptation and pupil; nothing with the Gaussian model (it is no
+  // eye PSF).
+  std::optional<double> veil_at(const cv::Mat& luminance, double adaptation_log, double pupil_mm, double x, double y,
+                                double exclusion_deg) const;
+
+  // The PSF's component kernels (empty with the Gaussian model, and with
+  // the split engine unless a report needs them).
+  const glare::ComponentKernels& kernels() const { return kernels_; }
+
+ private:
+  // Convolves `rgb` (frame pixels) with the PSF of weights `w` at true
+  // angles: on the angle plane (frame_projection.hpp) unless the frame is
+  // its own, the light the PSF keeps within its centre pixel staying on the
+  // frame's pixels, unresampled.
+  cv::Mat spread(const cv::Mat& rgb, const glare::PsfWeights& w) const;
+  // The convolution on the angle plane.
+  cv::Mat spread_plane(const cv::Mat& plane, const glare::PsfWeights& w) const;
+  // Per channel, the share of a pixel's light the PSF of weights `w` keeps
+  // in that pixel.
+  cv::Vec3f kept_share(const glare::PsfWeights& w) const;
+  // Adds the light the surround scatters into the frame: S (1 - M(x)),
+  // M(x) the share of the PSF at x that falls inside the frame.
+  void add_surround(cv::Mat& retinal, const glare::PsfWeights& w, double surround_cd_m2) const;
+
+  const Plan plan_;
+  const glare::EyeOptics optics_;
+  // The frame halved each way (area mean) before the splat to the plane,
+  // or empty: a plane at half the frame's px/deg or less receives about
+  // one frame pixel in four per plane pixel, and a 2x2 mean carries the
+  // same light as its four pixels (kept light stays full-resolution).
+  cv::Size halved_;
+  cv::Mat to_glare_frame(const cv::Mat& frame) const;
+  // The angle plane of the convolution (the plan's, or one at
+  // plan.glare.plane_scale of its resolution, from the halved frame when
+  // there is one) and its px/deg.
+  std::shared_ptr<const FrameProjection> plane_;
+  double ppd_;
+  glare::ComponentKernels kernels_;
+  std::unique_ptr<glare::FftConvolver> convolver_;     // exact engine
+  std::unique_ptr<glare::SplitConvolver> split_;       // or the split one
+  // Full mode: per component (core, inner, outer, halo), the share of the
+  // PSF centred at each pixel that falls inside the frame (CV_32FC3).
+  std::vector<cv::Mat> in_frame_;
+  // Per component (core, inner, outer, halo) and channel, the kernel's
+  // centre pixel.
+  cv::Vec3d centre_[4];
+  // The last full-mode frame, for still scenes.
+  struct Cache {
+    cv::Mat scene, retinal;
+    glare::PsfWeights weights;
+    double surround = 0.0;
+    bool matches(const cv::Mat& rgb, const glare::PsfWeights& w, double surround_cd_m2) const;
+    void keep(const cv::Mat& rgb, const glare::PsfWeights& w, double surround_cd_m2, const cv::Mat& retinal);
+  };
+  Cache cache_;
+};
+
+}  // namespace eyestream::pipeline

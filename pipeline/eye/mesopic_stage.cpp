@@ -1,0 +1,73 @@
+#include "pipeline/eye/mesopic_stage.hpp"
+
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+#include "retina/luminance.hpp"
+#include "retina/mesopic.hpp"
+#include "retina/tone_map.hpp"
+
+namespace eyestream::pipeline {
+
+MesopicStage::MesopicStage(const Plan& plan) : plan_(plan) {
+  if (plan.mesopic.acuity)
+    acuity_ =
+        std::make_unique<retina::AcuityLoss>(plan.mesopic.acuity_params, plan.pixels_per_degree, plan.encoding.seed,
+                                             plan.mesopic.colour.bottom_log, plan.mesopic.colour.top_log);
+}
+
+cv::Mat MesopicStage::acuity_level(const cv::Mat& rgb, double adaptation_log, double time_s, double gaze_x,
+                                   double gaze_y) const {
+  return level_of(retina::floored_luminance(rgb, plan_.dark_cd_m2), adaptation_log, time_s, gaze_x, gaze_y);
+}
+
+cv::Mat MesopicStage::level_of(const cv::Mat& floored, double adaptation_log, double time_s, double gaze_x,
+                               double gaze_y) const {
+  // log10 of the local luminance, low-passed at the coarsest band, held
+  // reduced by the level map's factor (1 at reference).
+  const int f = acuity_->level_factor(floored.size());
+  const cv::Mat luminance = retina::acuity_lowpass(floored, acuity_->sigmas_px().back(), f);
+  const retina::MesopicParams& m = plan_.mesopic.colour;
+  const float floor_rho = float(retina::mesopic_rho(adaptation_log, m));
+  cv::Mat rho(luminance.size(), CV_32F);
+  cv::parallel_for_(cv::Range(0, rho.rows), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      const float* l = luminance.ptr<float>(y);
+      float* r = rho.ptr<float>(y);
+      for (int x = 0; x < rho.cols; ++x) r[x] = std::max(float(retina::mesopic_rho(std::log10(l[x]), m)), floor_rho);
+    }
+  });
+  cv::Mat level = acuity_->level(rho, time_s, gaze_x, gaze_y, f);
+  if (f > 1) cv::resize(level, level, floored.size(), 0, 0, cv::INTER_LINEAR);
+  return level;
+}
+
+void MesopicStage::render(const cv::Mat& rgb, const retina::ToneCurve& curve, double adaptation_log, double time_s,
+                          cv::Mat& out, StageActivity* activity, double gaze_x, double gaze_y) const {
+  retina::MesopicColour colour;
+  const bool tinted = plan_.mesopic.enabled && retina::mesopic_colour(adaptation_log, plan_.mesopic.colour, colour);
+  const bool local = tinted && plan_.mesopic.colour.local_sigma_deg > 0.0;
+  // Above rho_all_kept no band can be lost: the loss is skipped, exactly
+  // (its result would equal its input), unless the plan forbids skipping.
+  const bool blur = plan_.mesopic.enabled && acuity_ &&
+                    (!plan_.skip || retina::mesopic_rho(adaptation_log, plan_.mesopic.colour) < acuity_->rho_all_kept());
+  // The frame's floored luminance, once for both effects that read it.
+  const cv::Mat floored = local || blur ? retina::floored_luminance(rgb, plan_.dark_cd_m2) : cv::Mat();
+  cv::Mat rho;
+  if (local) {
+    retina::local_rho(floored, adaptation_log, plan_.mesopic.colour.local_sigma_deg * plan_.pixels_per_degree,
+                      plan_.mesopic.colour, rho);
+    colour.rho_map = &rho;
+  }
+  if (tinted)
+    retina::tone_map(rgb, curve, colour, out);
+  else
+    retina::tone_map(rgb, curve, out);
+  if (blur) acuity_->apply(out, level_of(floored, adaptation_log, time_s, gaze_x, gaze_y));
+  if (activity) {
+    activity->mesopic = tinted;
+    activity->acuity = blur;
+  }
+}
+
+}  // namespace eyestream::pipeline

@@ -1,0 +1,33 @@
+#include "pipeline/eye/pixel_checks.hpp"
+
+#include <cmath>
+#include <vector>
+
+namespace eyestream::pipeline {
+
+std::int64_t count_nonfinite(const cv::Mat& rgb) {
+  CV_Assert(rgb.type() == CV_32FC3);
+  std::vector<std::int64_t> per_row(size_t(rgb.rows), 0);
+  cv::parallel_for_(cv::Range(0, rgb.rows), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      const cv::Vec3f* p = rgb.ptr<cv::Vec3f>(y);
+      std::int64_t n = 0;
+      for (int x = 0; x < rgb.cols; ++x)
+        n += !(std::isfinite(p[x][0]) && std::isfinite(p[x][1]) && std::isfinite(p[x][2]));
+      per_row[size_t(y)] = n;
+    }
+  });
+  std::int64_t total = 0;
+  for (std::int64_t n : per_row) total += n;
+  return total;
+}
+
+cv::Mat finite_copy(const cv::Mat& rgb) {
+  cv::Mat out = rgb.clone();
+  out.forEach<cv::Vec3f>([](cv::Vec3f& p, const int*) {
+    if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))) p = cv::Vec3f(0, 0, 0);
+  });
+  return out;
+}
+
+}  // namespace eyestream::pipeline

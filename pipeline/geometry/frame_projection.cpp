@@ -1,0 +1,388 @@
+#include "pipeline/geometry/frame_projection.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+#include "io/error.hpp"
+
+namespace eyestream::pipeline {
+
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+constexpr int kBlockRows = 32;  // plane rows per splat task
+
+// A target position: t = pos * k + offset (pixel centres at integers).
+struct Affine {
+  double kx = 1, ky = 1, offset = 0;
+};
+
+// Accumulates the bilinear splat of image rows [first_row, last_row] into
+// the target rows [r0, r0 + kBlockRows), then writes their normalised means
+// to `out` (times `multiplier` when given; `outside` where nothing lands).
+template <typename T, int C>
+void splat_block(const cv::Mat& image, const cv::Mat& positions, Affine a, int r0, int first_row, int last_row,
+                 const cv::Scalar& outside, const cv::Mat& multiplier, cv::Mat& out) {
+  using Acc = cv::Vec<T, C + 1>;
+  const int rows = std::min(kBlockRows, out.rows - r0), cols = out.cols;
+  thread_local std::vector<Acc> sums;  // reused: no page faults per call
+  sums.assign(size_t(rows) * size_t(cols), Acc::all(0));
+  const float kx = float(a.kx), ky = float(a.ky), offset = float(a.offset);
+  for (int y = first_row; y <= last_row; ++y) {
+    const T* in = image.ptr<T>(y);
+    const cv::Vec2f* pos = positions.ptr<cv::Vec2f>(y);
+    for (int x = 0; x < image.cols; ++x) {
+      const float tx = pos[x][0] * kx + offset, ty = pos[x][1] * ky + offset;
+      const int i0 = int(std::floor(tx)), j0 = int(std::floor(ty));
+      if (j0 + 1 < r0 || j0 >= r0 + rows) continue;
+      const T fx = T(tx - i0), fy = T(ty - j0);
+      Acc value;
+      for (int c = 0; c < C; ++c) value[c] = in[x * C + c];
+      value[C] = T(1);
+      for (int dj = 0; dj < 2; ++dj) {
+        const int j = j0 + dj - r0;
+        if (j < 0 || j >= rows) continue;
+        const T wy = dj ? fy : T(1) - fy;
+        for (int di = 0; di < 2; ++di) {
+          const int i = i0 + di;
+          if (i < 0 || i >= cols) continue;
+          sums[size_t(j) * size_t(cols) + size_t(i)] += value * ((di ? fx : T(1) - fx) * wy);
+        }
+      }
+    }
+  }
+  for (int j = 0; j < rows; ++j) {
+    T* o = out.ptr<T>(r0 + j);
+    const float* m = multiplier.empty() ? nullptr : multiplier.ptr<float>(r0 + j);
+    for (int i = 0; i < cols; ++i) {
+      const Acc& s = sums[size_t(j) * size_t(cols) + size_t(i)];
+      for (int c = 0; c < C; ++c)
+        o[i * C + c] = s[C] > T(0) ? s[c] / s[C] * (m ? T(m[i]) : T(1)) : T(outside[c]);
+    }
+  }
+}
+
+// Splats `image` onto `out` in blocks of target rows, each block a task
+// that scans only the image rows reaching it: the sums at each target
+// pixel come in one order whatever the thread count.
+template <typename T, int C>
+void splat_rows(const cv::Mat& image, const cv::Mat& positions, Affine a, const cv::Scalar& outside,
+                const cv::Mat& multiplier, cv::Mat& out) {
+  std::vector<int> top(size_t(image.rows)), bottom(size_t(image.rows));
+  cv::parallel_for_(cv::Range(0, image.rows), [&](const cv::Range& r) {
+    for (int y = r.start; y < r.end; ++y) {
+      const cv::Vec2f* pos = positions.ptr<cv::Vec2f>(y);
+      float low = 1e30f, high = -1e30f;
+      for (int x = 0; x < image.cols; ++x) {
+        low = std::min(low, pos[x][1]);
+        high = std::max(high, pos[x][1]);
+      }
+      top[size_t(y)] = int(std::floor(low * a.ky + a.offset));
+      bottom[size_t(y)] = int(std::floor(high * a.ky + a.offset)) + 1;
+    }
+  });
+  const int blocks = (out.rows + kBlockRows - 1) / kBlockRows;
+  cv::parallel_for_(cv::Range(0, blocks), [&](const cv::Range& r) {
+    for (int b = r.start; b < r.end; ++b) {
+      const int r0 = b * kBlockRows, r1 = std::min(out.rows, r0 + kBlockRows);
+      int first = image.rows, last = -1;
+      for (int y = 0; y < image.rows; ++y) {
+        if (bottom[size_t(y)] < r0 || top[size_t(y)] >= r1) continue;
+        first = std::min(first, y);
+        last = std::max(last, y);
+      }
+      splat_block<T, C>(image, positions, a, r0, first, last, outside, multiplier, out);
+    }
+  });
+}
+
+// The plane's fixed splat of a CV_32FC3 frame: the sums of b L into a
+// bordered accumulator (no bounds checks), times `norm` (the plane pixel's
+// solid-angle ratio over its sum of b, computed once).
+void splat_fixed(const cv::Mat& frame, const cv::Mat& positions, const std::vector<int>& top,
+                 const std::vector<int>& bottom, const cv::Mat& norm, cv::Mat& out) {
+  const int cols = out.cols, stride = cols + 2;
+  const int blocks = (out.rows + kBlockRows - 1) / kBlockRows;
+  cv::parallel_for_(cv::Range(0, blocks), [&](const cv::Range& r) {
+    thread_local std::vector<cv::Vec3f> sums;
+    for (int b = r.start; b < r.end; ++b) {
+      const int r0 = b * kBlockRows, rows = std::min(kBlockRows, out.rows - r0);
+      sums.assign(size_t(rows + 2) * size_t(stride), cv::Vec3f(0, 0, 0));  // rows r0 - 1 .. r0 + rows
+      for (int y = 0; y < frame.rows; ++y) {
+        if (bottom[size_t(y)] < r0 || top[size_t(y)] >= r0 + rows) continue;
+        const cv::Vec3f* in = frame.ptr<cv::Vec3f>(y);
+        const cv::Vec2f* pos = positions.ptr<cv::Vec2f>(y);
+        for (int x = 0; x < frame.cols; ++x) {
+          // Plane positions are >= 0: truncation floors tx + 1 and ty + 1.
+          const float tx = pos[x][0] + 0.5f, ty = pos[x][1] + 0.5f;
+          const int i0 = int(tx) - 1, j0 = int(ty) - 1;
+          if (j0 + 1 < r0 || j0 >= r0 + rows) continue;
+          const float fx = tx - float(i0 + 1), fy = ty - float(j0 + 1);
+          cv::Vec3f* s = &sums[size_t(j0 - r0 + 1) * size_t(stride) + size_t(i0 + 1)];
+          const cv::Vec3f top_row = in[x] * (1.0f - fy), bottom_row = in[x] * fy;
+          s[0] += top_row * (1.0f - fx);
+          s[1] += top_row * fx;
+          s[stride] += bottom_row * (1.0f - fx);
+          s[stride + 1] += bottom_row * fx;
+        }
+      }
+      for (int j = 0; j < rows; ++j) {
+        cv::Vec3f* o = out.ptr<cv::Vec3f>(r0 + j);
+        const float* n = norm.ptr<float>(r0 + j);
+        const cv::Vec3f* s = &sums[size_t(j + 1) * size_t(stride) + 1];
+        for (int i = 0; i < cols; ++i) o[i] = s[i] * n[i];
+      }
+    }
+  });
+}
+
+cv::Mat splat_any(const cv::Mat& image, const cv::Mat& positions, Affine a, cv::Size size, const cv::Scalar& outside,
+                  const cv::Mat& multiplier) {
+  CV_Assert(positions.type() == CV_32FC2 && positions.size() == image.size());
+  cv::Mat out(size, image.type());
+  switch (image.type()) {
+    case CV_32FC1: splat_rows<float, 1>(image, positions, a, outside, multiplier, out); break;
+    case CV_32FC3: splat_rows<float, 3>(image, positions, a, outside, multiplier, out); break;
+    case CV_64FC3: splat_rows<double, 3>(image, positions, a, outside, multiplier, out); break;
+    default: CV_Error(cv::Error::StsUnsupportedFormat, "splat: CV_32FC1, CV_32FC3 or CV_64FC3");
+  }
+  return out;
+}
+
+}  // namespace
+
+Projection projection_from_name(const std::string& name) {
+  if (name == "rectilinear") return Projection::rectilinear;
+  if (name == "equidistant") return Projection::equidistant;
+  throw UsageError("--projection must be rectilinear or equidistant, not '" + name + "'");
+}
+
+const char* projection_name(Projection p) { return p == Projection::rectilinear ? "rectilinear" : "equidistant"; }
+
+FrameProjection::FrameProjection(int width, int height, double fov_deg, Projection kind, double scale)
+    : kind_(kind), frame_(width, height), plane_(width, height), fov_deg_(fov_deg), scale_(scale),
+      frame_ppd_(width / fov_deg), ppd_(width / fov_deg) {
+  CV_Assert(scale > 0.0 && scale <= 1.0);
+  if (identity()) return;
+  if (kind == Projection::equidistant) {
+    ppd_ = frame_ppd_ * scale;
+    plane_ = cv::Size(int(std::ceil(width * scale)), int(std::ceil(height * scale)));
+  } else {
+    f_px_ = 0.5 * width / std::tan(0.5 * fov_deg * kDeg);
+    fp_ = f_px_ * scale;
+    frame_ppd_ = f_px_ * kDeg;
+    ppd_ = fp_ * kDeg;
+    plane_ = cv::Size(int(std::ceil(2.0 * fp_ * std::atan(0.5 * width / f_px_))),
+                      int(std::ceil(2.0 * fp_ * std::atan(0.5 * height / f_px_))));
+  }
+  positions_.create(frame_, CV_32FC2);
+  cv::parallel_for_(cv::Range(0, height), [&](const cv::Range& r) {
+    for (int y = r.start; y < r.end; ++y) {
+      cv::Vec2f* p = positions_.ptr<cv::Vec2f>(y);
+      for (int x = 0; x < width; ++x) {
+        const cv::Point2d q = to_plane({x + 0.5, y + 0.5});
+        p[x] = cv::Vec2f(float(q.x), float(q.y));
+      }
+    }
+  });
+  cv::Mat shifted = positions_ - cv::Scalar(0.5, 0.5);
+  cv::convertMaps(shifted, cv::Mat(), remap1_, remap2_, CV_16SC2);
+  flux_ratio_.create(plane_, CV_32F);
+  for (int v = 0; v < plane_.height; ++v)
+    for (int u = 0; u < plane_.width; ++u) {
+      const double theta = kind_ == Projection::equidistant
+                               ? 0.0  // angle-uniform: one solid angle per pixel, as the identity takes it
+                               : std::hypot(u + 0.5 - 0.5 * plane_.width, v + 0.5 - 0.5 * plane_.height) / fp_;
+      flux_ratio_.at<float>(v, u) = float(theta > 0.0 ? std::sin(theta) / theta : 1.0);
+    }
+  // The fixed splat's row reach and normalisation (the sum of b over the
+  // frame pixels landing on each plane pixel: the same every frame).
+  flux_top_.resize(size_t(height));
+  flux_bottom_.resize(size_t(height));
+  for (int y = 0; y < height; ++y) {
+    float low = 1e30f, high = -1e30f;
+    for (int x = 0; x < width; ++x) {
+      low = std::min(low, positions_.at<cv::Vec2f>(y, x)[1]);
+      high = std::max(high, positions_.at<cv::Vec2f>(y, x)[1]);
+    }
+    flux_top_[size_t(y)] = int(std::floor(low - 0.5f));
+    flux_bottom_[size_t(y)] = int(std::floor(high - 0.5f)) + 1;
+  }
+  const cv::Mat weight = splat_any(cv::Mat(frame_, CV_32FC1, cv::Scalar(1.0)), positions_, Affine{1, 1, -0.5}, plane_,
+                                   cv::Scalar(0.0), cv::Mat());  // 1 where covered, 0 beyond
+  cv::Mat ones(frame_, CV_32FC3, cv::Scalar::all(1.0)), sums(plane_, CV_32FC3);
+  splat_fixed(ones, positions_, flux_top_, flux_bottom_, cv::Mat(plane_, CV_32F, cv::Scalar(1.0)), sums);
+  flux_norm_.create(plane_, CV_32F);
+  for (int v = 0; v < plane_.height; ++v)
+    for (int u = 0; u < plane_.width; ++u) {
+      const float b = sums.at<cv::Vec3f>(v, u)[0];
+      flux_norm_.at<float>(v, u) = weight.at<float>(v, u) > 0.0f && b > 0.0f ? flux_ratio_.at<float>(v, u) / b : 0.0f;
+    }
+}
+
+cv::Size2d FrameProjection::retina_reach() const {
+  if (kind_ == Projection::equidistant) return {frame_.width * scale_, frame_.height * scale_};
+  // The largest offsets, across and down, of any frame point seen from any
+  // gaze on the frame: both on its edge (the offsets grow outward), so
+  // sampled densely along the edge for the gaze and for the point.
+  std::vector<cv::Point2d> edge;
+  constexpr int kPerSide = 96;
+  for (int i = 0; i <= kPerSide; ++i) {
+    const double u = double(i) / kPerSide;
+    edge.push_back({u * frame_.width, 0.0});
+    edge.push_back({u * frame_.width, double(frame_.height)});
+    edge.push_back({0.0, u * frame_.height});
+    edge.push_back({double(frame_.width), u * frame_.height});
+  }
+  double across = 0.0, down = 0.0;
+  for (const cv::Point2d& gaze : edge) {
+    for (const cv::Point2d& p : edge) {
+      const cv::Vec2d o = gaze_offset(gaze, p);
+      across = std::max(across, std::abs(o[0]));
+      down = std::max(down, std::abs(o[1]));
+    }
+  }
+  return {across + 1.0, down + 1.0};  // a pixel's margin for the interpolation
+}
+
+cv::Vec2d FrameProjection::gaze_offset(cv::Point2d gaze, cv::Point2d p) const {
+  if (kind_ == Projection::equidistant) return {(p.x - gaze.x) * scale_, (p.y - gaze.y) * scale_};
+  const cv::Vec3d ez = cv::normalize(cv::Vec3d(gaze.x - 0.5 * frame_.width, gaze.y - 0.5 * frame_.height, f_px_));
+  const cv::Vec3d ex = cv::normalize(cv::Vec3d(1, 0, 0) - ez[0] * ez), ey = ez.cross(ex);
+  const cv::Vec3d d(p.x - 0.5 * frame_.width, p.y - 0.5 * frame_.height, f_px_);
+  const double a = d.dot(ex), b = d.dot(ey), c = d.dot(ez), s = std::hypot(a, b);
+  const double k = s > 0.0 ? fp_ * std::atan2(s, c) / s : 0.0;
+  return {k * a, k * b};
+}
+
+cv::Point2d FrameProjection::to_plane(cv::Point2d p) const {
+  if (identity()) return p;
+  if (kind_ == Projection::equidistant) return p * scale_;
+  const double X = p.x - 0.5 * frame_.width, Y = p.y - 0.5 * frame_.height, r = std::hypot(X, Y);
+  const double s = r > 0.0 ? fp_ * std::atan(r / f_px_) / r : scale_;
+  return {0.5 * plane_.width + X * s, 0.5 * plane_.height + Y * s};
+}
+
+cv::Point2d FrameProjection::to_frame(cv::Point2d q) const {
+  if (identity()) return q;
+  if (kind_ == Projection::equidistant) return q / scale_;
+  const double U = q.x - 0.5 * plane_.width, V = q.y - 0.5 * plane_.height, rho = std::hypot(U, V);
+  const double theta = std::min(rho / fp_, 0.5 * M_PI - 1e-6);
+  const double s = rho > 0.0 ? f_px_ * std::tan(theta) / rho : 1.0 / scale_;
+  return {0.5 * frame_.width + U * s, 0.5 * frame_.height + V * s};
+}
+
+double FrameProjection::angle_deg(cv::Point2d a, cv::Point2d b) const {
+  if (kind_ == Projection::equidistant) return std::hypot(a.x - b.x, a.y - b.y) / frame_ppd_;
+  const auto direction = [&](cv::Point2d p) {
+    return cv::Vec3d(p.x - 0.5 * frame_.width, p.y - 0.5 * frame_.height, f_px_) /
+           std::sqrt(std::pow(p.x - 0.5 * frame_.width, 2) + std::pow(p.y - 0.5 * frame_.height, 2) + f_px_ * f_px_);
+  };
+  const cv::Vec3d da = direction(a), db = direction(b);
+  return std::atan2(cv::norm(da.cross(db)), da.dot(db)) / kDeg;
+}
+
+cv::Vec2d FrameProjection::local_pixels_per_degree(cv::Point2d p) const {
+  if (kind_ == Projection::equidistant) return {frame_ppd_, frame_ppd_};
+  const double x = (p.x - 0.5 * frame_.width) / f_px_, y = (p.y - 0.5 * frame_.height) / f_px_;
+  const double n2 = 1.0 + x * x + y * y;
+  return {frame_ppd_ * n2 / std::sqrt(1.0 + y * y), frame_ppd_ * n2 / std::sqrt(1.0 + x * x)};
+}
+
+double FrameProjection::solid_angle_deg2() const {
+  if (kind_ == Projection::equidistant) return (frame_.width / frame_ppd_) * (frame_.height / frame_ppd_);
+  const double a = 0.5 * frame_.width / f_px_, b = 0.5 * frame_.height / f_px_;
+  return 4.0 * std::atan(a * b / std::sqrt(1.0 + a * a + b * b)) / (kDeg * kDeg);
+}
+
+cv::Mat FrameProjection::solid_angle_weights() const {
+  cv::Mat w(frame_, CV_32F, cv::Scalar(1.0));
+  if (kind_ == Projection::equidistant) return w;
+  for (int y = 0; y < frame_.height; ++y)
+    for (int x = 0; x < frame_.width; ++x) {
+      const double X = (x + 0.5 - 0.5 * frame_.width) / f_px_, Y = (y + 0.5 - 0.5 * frame_.height) / f_px_;
+      w.at<float>(y, x) = float(std::pow(1.0 + X * X + Y * Y, -1.5));  // cos^3 of the angle off axis
+    }
+  return w;
+}
+
+cv::Mat FrameProjection::splat(const cv::Mat& image, const cv::Mat& positions, cv::Size size,
+                               const cv::Scalar& outside) {
+  return splat_any(image, positions, Affine(), size, outside, cv::Mat());
+}
+
+cv::Mat FrameProjection::to_plane_mean(const cv::Mat& frame, const cv::Scalar& outside, cv::Size size) const {
+  CV_Assert(frame.size() == frame_);
+  if (size.empty()) size = plane_;
+  if (identity() && size == frame_) return frame;
+  CV_Assert(!identity());
+  const Affine a{double(size.width) / plane_.width, double(size.height) / plane_.height, -0.5};
+  return splat_any(frame, positions_, a, size, outside, cv::Mat());
+}
+
+cv::Mat FrameProjection::to_plane_flux(const cv::Mat& frame) const {
+  CV_Assert(frame.size() == frame_);
+  if (identity()) return frame;
+  if (frame.type() != CV_32FC3)
+    return splat_any(frame, positions_, Affine{1, 1, -0.5}, plane_, cv::Scalar::all(0.0), flux_ratio_);
+  cv::Mat out(plane_, CV_32FC3);
+  splat_fixed(frame, positions_, flux_top_, flux_bottom_, flux_norm_, out);
+  return out;
+}
+
+cv::Mat FrameProjection::gaze_positions(cv::Point2d gaze, cv::Size size, double scale, cv::Point2d origin) const {
+  const double sx = double(frame_.width) / size.width, sy = double(frame_.height) / size.height;
+  cv::Mat out(size, CV_32FC2);
+  if (identity()) {  // a translation
+    for (int y = 0; y < size.height; ++y)
+      for (int x = 0; x < size.width; ++x)
+        out.at<cv::Vec2f>(y, x) = cv::Vec2f(float(origin.x + scale * ((x + 0.5) * sx - gaze.x)),
+                                            float(origin.y + scale * ((y + 0.5) * sy - gaze.y)));
+    return out;
+  }
+  const auto exact = [&](double X, double Y) {
+    const cv::Vec2d o = gaze_offset(gaze, {X, Y});
+    return cv::Vec2d(origin.x + scale * o[0], origin.y + scale * o[1]);
+  };
+  // Exact at nodes every kStep pixels (and the last), bilinear between.
+  constexpr int kStep = 4;
+  const auto nodes = [](int n) {
+    std::vector<int> v;
+    for (int i = 0; i < std::max(n - 1, 1); i += kStep) v.push_back(i);
+    v.push_back(std::max(n - 1, 1));  // a one-pixel image: node 0 and a virtual neighbour at 1
+    return v;
+  };
+  const std::vector<int> nx = nodes(size.width), ny = nodes(size.height);
+  cv::Mat grid(int(ny.size()), int(nx.size()), CV_64FC2);
+  cv::parallel_for_(cv::Range(0, grid.rows), [&](const cv::Range& r) {
+    for (int j = r.start; j < r.end; ++j)
+      for (int i = 0; i < grid.cols; ++i)
+        grid.at<cv::Vec2d>(j, i) = exact((nx[size_t(i)] + 0.5) * sx, (ny[size_t(j)] + 0.5) * sy);
+  });
+  cv::parallel_for_(cv::Range(0, size.height), [&](const cv::Range& r) {
+    for (int y = r.start; y < r.end; ++y) {
+      const int j = std::min(y / kStep, grid.rows - 2);
+      const double fy = double(y - ny[size_t(j)]) / (ny[size_t(j) + 1] - ny[size_t(j)]);
+      cv::Vec2f* o = out.ptr<cv::Vec2f>(y);
+      for (int x = 0; x < size.width; ++x) {
+        const int i = std::min(x / kStep, grid.cols - 2);
+        const double fx = double(x - nx[size_t(i)]) / (nx[size_t(i) + 1] - nx[size_t(i)]);
+        const cv::Vec2d v = (grid.at<cv::Vec2d>(j, i) * (1 - fx) + grid.at<cv::Vec2d>(j, i + 1) * fx) * (1 - fy) +
+                            (grid.at<cv::Vec2d>(j + 1, i) * (1 - fx) + grid.at<cv::Vec2d>(j + 1, i + 1) * fx) * fy;
+        o[x] = cv::Vec2f(float(v[0]), float(v[1]));
+      }
+    }
+  });
+  return out;
+}
+
+cv::Mat FrameProjection::to_frame_image(const cv::Mat& plane) const {
+  if (identity()) return plane;
+  CV_Assert(plane.size() == plane_);
+  cv::Mat out;
+  cv::remap(plane, out, remap1_, remap2_, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+  return out;
+}
+
+}  // namespace eyestream::pipeline

@@ -1,0 +1,53 @@
+// Every panel's eye (viewer_panels.hpp) over the same input, composed into
+// one display frame (preview.hpp) and encoded for the sink.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "io/frame_sink.hpp"
+#include "io/frame_source.hpp"
+#include "pipeline/eye/eye_simulator.hpp"
+#include "pipeline/run/preview.hpp"
+#include "pipeline/run/viewer_panels.hpp"
+
+namespace eyestream::pipeline {
+
+class PreviewRenderer {
+ public:
+  PreviewRenderer(const Settings& settings, const io::SourceInfo& source, io::SinkNeeds needs);
+
+  // Steps every panel's eye through the frame's interval and returns the
+  // composed frame, encoded when the sink needs codes. report(i) then
+  // holds panel i's FrameReport.
+  io::DisplayFrame process(const io::SceneFrame& frame, const std::vector<GazeSegment>& segments,
+                           const cv::Mat& target_mask);
+
+  size_t panels() const { return panels_.size(); }
+  const PanelSpec& spec(size_t i) const { return panels_[i].spec; }
+  const FrameReport& report(size_t i) const { return panels_[i].report; }
+  const EyeSimulator& eye(size_t i) const { return *panels_[i].eye; }
+  // Checkpoints: every panel's memory, and back.
+  std::vector<EyeMemory> save() const;
+  void restore(const std::vector<EyeMemory>& memories);
+  // What is wrong with `memories` for these panels (empty: nothing).
+  std::string memory_error(const std::vector<EyeMemory>& memories) const;
+  // The first viewer panel (the one logs and --state-exr follow).
+  size_t main_panel() const;
+  // Each panel's plan, headed by its label when there are several.
+  std::string describe() const;
+
+ private:
+  struct Panel {
+    PanelSpec spec;
+    Plan plan;
+    std::unique_ptr<EyeSimulator> eye;
+    FrameReport report;
+  };
+  std::vector<Panel> panels_;
+  PreviewOptions options_;
+  io::SinkNeeds needs_;
+};
+
+}  // namespace eyestream::pipeline

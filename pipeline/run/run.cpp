@@ -1,0 +1,281 @@
+#include "pipeline/run/run.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <opencv2/core.hpp>
+#include <sstream>
+
+#include "io/background_sink.hpp"
+#include "io/error.hpp"
+#include "io/gaze_import.hpp"
+#include "io/gaze_summary.hpp"
+#include "io/library_logging.hpp"
+#include "io/prefetch_source.hpp"
+#include "io/sink_factory.hpp"
+#include "io/source_factory.hpp"
+#include "io/staged_file.hpp"
+#include "pipeline/run/output_paths.hpp"
+#include "pipeline/run/checkpoint.hpp"
+#include "pipeline/eye/gaze_timeline.hpp"
+#include "pipeline/run/interrupts.hpp"
+#include "pipeline/run/preview_renderer.hpp"
+#include "pipeline/run/progress.hpp"
+#include "pipeline/run/report_writer.hpp"
+#include "pipeline/eye/target_region.hpp"
+
+namespace eyestream::pipeline {
+
+Interrupted::Interrupted(int sig)
+    : std::runtime_error(std::string("interrupted by ") + signal_name(sig) + " before any frame was written; nothing kept"),
+      signal(sig) {}
+
+std::string RunSummary::one_line() const {
+  std::ostringstream o;
+  o.precision(3);
+  if (!gaze.empty()) o << "eyestream: " << gaze << "\n";
+  if (interrupted_by) o << "eyestream: interrupted by " << signal_name(interrupted_by) << "; kept the first ";
+  else o << "eyestream: ";
+  o << frames << " frames in " << wall_s << " s (" << (wall_s > 0 ? frames / wall_s : 0.0)
+    << " fps) -> " << output << "; final adaptation " << final_adaptation_log << " log10 cd/m^2";
+  if (nonfinite_pixels) o << "; " << nonfinite_pixels << " non-finite pixels shown black";
+  return o.str();
+}
+
+namespace {
+
+io::GazeImportOptions gaze_import_options(const Settings& s, const io::SourceInfo& info) {
+  io::GazeImportOptions o;
+  const std::string& f = s.gaze_format;
+  o.format = f == "native"       ? io::GazeFormat::kNative
+             : f == "pupil-core" ? io::GazeFormat::kPupilCore
+             : f == "neon"       ? io::GazeFormat::kNeon
+             : f == "neon-surface" ? io::GazeFormat::kNeonSurface
+             : f == "tobii"      ? io::GazeFormat::kTobii
+             : f == "eyelink"    ? io::GazeFormat::kEyeLink
+                                 : io::GazeFormat::kAuto;
+  o.units = s.gaze_units == "norm" ? io::GazeUnits::kNormalised : io::GazeUnits::kPixels;
+  o.frame_width = info.width;
+  o.frame_height = info.height;
+  o.source_width = s.gaze_source_width;
+  o.source_height = s.gaze_source_height;
+  o.min_confidence = s.gaze_confidence;
+  o.offset_s = s.gaze_offset_s;
+  o.sync_clock = s.gaze_sync_s;
+  o.sync_message = s.gaze_sync_message;
+  o.recording = s.gaze_recording;
+  o.blinks = s.gaze_blinks;
+  o.eye = s.gaze_eye;
+  o.pupil_scale_mm = s.gaze_pupil_scale_mm;
+  return o;
+}
+
+std::unique_ptr<io::FrameSource> open_input(const Settings& s) {
+  return io::open_source(s.input, io::SourceOptions{s.exr, s.video_input, s.frame_size});
+}
+
+// Decoding and encoding on threads of their own beside the eye, unless the
+// run is held to one thread. The frames and their order do not change.
+bool overlap_io(const Settings& s) { return s.threads != 1; }
+
+struct LoadedGaze {
+  std::vector<io::GazeSample> samples;
+  std::optional<io::GazeSummary> summary;  // when there is a log
+};
+
+// The gaze log and what it holds against the video (gaze_summary.hpp).
+LoadedGaze load_gaze(const Settings& s, const io::SourceInfo& info) {
+  LoadedGaze g;
+  if (s.gaze.empty() && s.pupil_from_gaze)
+    throw UsageError("--pupil-from-gaze needs a gaze log with pupil diameters (-g)");
+  if (s.gaze.empty()) return g;
+  const io::GazeImportOptions o = gaze_import_options(s, info);
+  io::GazeRead read;
+  g.samples = io::read_gaze(s.gaze, o, &read);
+  const double end_s =
+      info.frame_count > 0 && info.frames_per_second > 0 ? double(info.frame_count) / info.frames_per_second : -1.0;
+  g.summary = io::summarise_gaze(g.samples, read.format, info.width, info.height, end_s);
+  g.summary->notes = read.notes;
+  if (s.pupil_from_gaze && std::none_of(g.samples.begin(), g.samples.end(), io::has_usable_pupil))
+    throw InputError(s.gaze + ": --pupil-from-gaze: the log records no pupil diameter" +
+                     std::string(read.format == io::GazeFormat::kEyeLink
+                                     ? " (EyeLink: give millimetres per pupil unit with --gaze-pupil-scale)"
+                                     : " (native logs: a pupil_mm column; Tobii: Pupil diameter left/right)"));
+  return g;
+}
+
+}  // namespace
+
+std::string describe_run(const Settings& s) {
+  const std::unique_ptr<io::FrameSource> source = open_input(s);
+  const PreviewRenderer renderer(s, source->info(), io::sink_needs(s.output, s.sink));
+  std::string text = s.input + ": " + source->info().description + "\n" + renderer.describe();
+  const LoadedGaze gaze = load_gaze(s, source->info());  // refused here as `run` would refuse it
+  if (gaze.summary) {
+    text += gaze.summary->line() + "\n";
+    for (const std::string& n : gaze.summary->notes) text += "gaze: " + n + "\n";
+    for (const std::string& w : gaze.summary->warnings) text += "warning: " + w + "\n";
+  }
+  return text;
+}
+
+namespace {
+
+std::unique_ptr<ReportWriter> report_writer(const Settings& s, const PreviewRenderer& renderer) {
+  if (s.report.empty()) return nullptr;
+  std::vector<ReportViewer> viewers;
+  for (size_t i = 0; i < renderer.panels(); ++i)
+    if (renderer.spec(i).viewer)
+      viewers.push_back({renderer.spec(i).label, renderer.spec(i).settings.viewer.age_years});
+  return std::make_unique<ReportWriter>(s.report, std::move(viewers));
+}
+
+void log_frame(const io::SceneFrame& frame, const FrameReport& r) {
+  const auto ran = [](bool on) { return on ? "ran" : "skipped"; };
+  std::fprintf(stderr,
+               "frame %lld t=%.3f s gaze=(%.1f,%.1f)%s adaptation=%.3f target=%.3f glare=%s%s retina=%s%s "
+               "afterimages=%s mesopic=%s acuity=%s (%.1f ms)\n",
+               (long long)frame.index, frame.time_s, r.gaze_x, r.gaze_y, r.eye_closed ? " closed" : "",
+               r.adaptation_log, r.target_log, ran(r.active.glare),
+               r.active.glare ? "" : " (nothing above the display peak)", ran(r.active.retina),
+               r.active.retina ? "" : " (at rest)", ran(r.active.afterimages), ran(r.active.mesopic),
+               ran(r.active.acuity), r.times.total());
+}
+
+// Checks the checkpoint options and, with --resume, restores the eyes and
+// the report from the checkpoint; returns the first frame still to write.
+std::int64_t prepare_checkpoints(const Settings& s, const std::string& settings, io::FrameSink& sink,
+                                 PreviewRenderer& renderer, ReportWriter* report) {
+  if ((s.checkpoint_every > 0 || s.resume) && s.checkpoint.empty())
+    throw UsageError("--checkpoint-every and --resume need --checkpoint FILE");
+  if (s.checkpoint_every > 0 && !sink.commit_so_far())
+    throw UsageError("--checkpoint-every needs a PNG or EXR frame output; split a video with `eyestream chunks`");
+  if (!s.resume) return 0;
+  const Checkpoint c = read_checkpoint(s.checkpoint);
+  const std::string mismatch = checkpoint_mismatch(s.checkpoint, c, settings);
+  if (!mismatch.empty()) throw InputError(mismatch);
+  if (c.panels.size() != renderer.panels()) throw InputError(s.checkpoint + ": not a valid checkpoint (panels)");
+  const std::string wrong = renderer.memory_error(c.panels);
+  if (!wrong.empty()) throw InputError(s.checkpoint + ": not a valid checkpoint (" + wrong + ")");
+  renderer.restore(c.panels);
+  if (report) report->restore(c.report);
+  io::remove_stale_partials(std::filesystem::path(s.output).parent_path());
+  return c.next_frame;
+}
+
+}  // namespace
+
+RunSummary run(const Settings& s) {
+  if (s.end_frame != 0 && s.end_frame <= s.start_frame)
+    throw UsageError("--end-frame " + std::to_string(s.end_frame) + " must be after --start-frame " +
+                     std::to_string(s.start_frame));
+  cv::setNumThreads(s.threads > 0 ? s.threads : -1);
+  io::set_library_verbosity(s.verbose);
+  std::unique_ptr<io::FrameSource> source = open_input(s);
+  const io::SourceInfo& info = source->info();
+  const LoadedGaze gaze = load_gaze(s, info);
+  const std::vector<io::GazeSample>& samples = gaze.samples;
+  if (gaze.summary) {  // before the work; the summary line itself comes with the run's (RunSummary)
+    if (!s.quiet)
+      for (const std::string& n : gaze.summary->notes) std::fprintf(stderr, "eyestream: gaze: %s\n", n.c_str());
+    for (const std::string& w : gaze.summary->warnings) std::fprintf(stderr, "eyestream: warning: %s\n", w.c_str());
+  }
+  const TargetRegion target(s.target_rect, s.target_mask, cv::Size(info.width, info.height));
+  check_outputs(run_outputs(s));  // before anything is written
+  if (!s.overwrite && !s.resume) {
+    const std::int64_t end = info.frame_count > 0 && (s.end_frame == 0 || s.end_frame > info.frame_count)
+                                 ? info.frame_count
+                                 : s.end_frame != 0 && info.frame_count > 0 ? s.end_frame : -1;
+    refuse_existing(run_outputs(s), s.start_frame, end);
+  }
+  io::SinkOptions sink_options = s.sink;
+  sink_options.video.frames_per_second = info.frames_per_second;
+  std::unique_ptr<io::FrameSink> sink = io::make_sink(s.output, sink_options);
+  if (overlap_io(s)) sink = std::make_unique<io::BackgroundSink>(std::move(sink));
+  PreviewRenderer renderer(s, info, sink->needs());
+  if (s.verbose) std::fprintf(stderr, "%s: %s\n%s", s.input.c_str(), info.description.c_str(), renderer.describe().c_str());
+  const size_t main = renderer.main_panel();
+  const GazeTimeline timeline(samples, info.width / 2.0, info.height / 2.0);
+  std::unique_ptr<ReportWriter> report = report_writer(s, renderer);
+  if (report && gaze.summary) report->set_gaze(*gaze.summary);
+  const std::string settings = run_settings(s, info);
+  const std::uint64_t identity = run_identity(settings);
+  const std::int64_t resume_from = prepare_checkpoints(s, settings, *sink, renderer, report.get());
+  const char* kill_at = std::getenv("EYESTREAM_TEST_KILL_AT_FRAME");  // crash injection for the resume test
+  const char* signal_at = std::getenv("EYESTREAM_TEST_SIGNAL_AT_FRAME");  // "N" or "N,SIGNUM": the interrupt tests
+  const InterruptGuard interrupts;
+
+  std::optional<io::StagedFile> state_file;  // committed with the other outputs
+  RunSummary summary;
+  summary.output = s.output;
+  Progress progress(info.frame_count, s.progress && !s.quiet, s.progress_every_s, s.progress_file);
+  if (overlap_io(s)) source = std::make_unique<io::PrefetchSource>(std::move(source));
+  const std::int64_t first_processed =
+      std::max<std::int64_t>(0, s.start_frame - std::int64_t(std::ceil(s.preroll_s * info.frames_per_second)));
+  std::optional<io::SceneFrame> current = source->next();
+  const std::int64_t skip_to = std::max(first_processed, resume_from);
+  while (current && current->index < skip_to) current = source->next();  // before the pre-roll or the checkpoint
+  while (current && (s.end_frame == 0 || current->index < s.end_frame)) {
+    if (InterruptGuard::received()) {
+      summary.interrupted_by = InterruptGuard::received();
+      // Where a resumed run would go on: a checkpoint at this frame.
+      if (!s.checkpoint.empty() && summary.frames > 0 && sink->commit_so_far())
+        write_checkpoint(s.checkpoint, {identity, settings, current->index, report ? report->save() : nlohmann::json(),
+                                        renderer.save()});
+      break;
+    }
+    std::optional<io::SceneFrame> next = source->next();
+    const double t1 = next ? next->time_s : current->time_s + 1.0 / info.frames_per_second;
+    const bool written = current->index >= s.start_frame;
+    const io::DisplayFrame shown =
+        renderer.process(*current, timeline.segments(current->time_s, t1), target.mask(current->index));
+    const FrameReport& main_report = renderer.report(main);
+    if (main_report.nonfinite_pixels > 0 && s.bad_pixels == "fail")
+      throw InputError(current->source + ": frame " + std::to_string(current->index) + " has " +
+                       std::to_string(main_report.nonfinite_pixels) +
+                       " NaN or infinite pixels (--bad-pixels clamp to go on)");
+    if (written) sink->write(shown);
+    for (size_t i = 0, v = 0; written && report && i < renderer.panels(); ++i)
+      if (renderer.spec(i).viewer) report->add(current->index, current->time_s, v++, renderer.report(i));
+    if (!s.state_exr.empty() && current->index == s.state_frame)
+      state_file.emplace(renderer.eye(main).retina().stage_state(s.state_exr));
+    if (written && next && s.checkpoint_every > 0 && (current->index + 1 - s.start_frame) % s.checkpoint_every == 0) {
+      sink->commit_so_far();  // the frames so far must outlive a crash
+      write_checkpoint(s.checkpoint, {identity, settings, current->index + 1, report ? report->save() : nlohmann::json(),
+                                      renderer.save()});
+    }
+    if (kill_at && std::atoll(kill_at) == current->index) std::_Exit(137);
+    if (signal_at && std::atoll(signal_at) == current->index)
+      std::raise(std::strchr(signal_at, ',') ? std::atoi(std::strchr(signal_at, ',') + 1) : SIGINT);
+    summary.nonfinite_pixels += main_report.nonfinite_pixels;
+    if (s.verbose) log_frame(*current, main_report);
+    summary.frames += written;
+    progress.frame_done();
+    current = std::move(next);
+  }
+  if (summary.frames == 0 && summary.interrupted_by) throw Interrupted(summary.interrupted_by);
+  if (summary.frames == 0)
+    throw InputError(s.input + (s.start_frame > 0 ? ": no frame at or after --start-frame " +
+                                                       std::to_string(s.start_frame)
+                                                 : std::string(": no frame could be read")));
+  // Every output is complete under its temporary name before any is
+  // renamed into place: a failure leaves none of them.
+  std::vector<io::StagedFile> staged;
+  if (report) staged = report->stage();
+  sink->finish();
+  for (io::StagedFile& f : staged) f.commit();
+  if (state_file) state_file->commit();
+  progress.finish();
+  summary.wall_s = progress.elapsed_s();
+  summary.final_adaptation_log = renderer.eye(main).adaptation_log();
+  if (gaze.summary) summary.gaze = gaze.summary->line();
+  return summary;
+}
+
+}  // namespace eyestream::pipeline

@@ -1,0 +1,43 @@
+#include "pipeline/settings/quality_presets.hpp"
+
+#include "io/error.hpp"
+
+namespace eyestream::pipeline {
+
+void apply_quality_preset(const std::string& name, Settings& s) {
+  if (name == "reference") {
+    s.precision = "double";
+    s.state_sites_per_pixel = 1.0;
+    s.substep_tolerance_deg = 0.0;
+    s.psf_model = "vos";
+    s.glare_engine = "exact";
+    s.glare_tail_factor = 4;  // unused by the exact engine; set so presets apply in any order alike
+    s.glare_resolution = 1.0;
+    s.acuity.pyramid_from_px = 0.0;
+    s.sink.video.preset = "medium";
+  } else if (name == "balanced") {
+    s.precision = "float";
+    s.state_sites_per_pixel = 0.5;
+    s.substep_tolerance_deg = 0.05;
+    s.psf_model = "vos";
+    s.glare_engine = "split";
+    s.glare_tail_factor = 2;
+    s.glare_resolution = 1.0;
+    s.acuity.pyramid_from_px = 6.0;
+    s.sink.video.preset = "faster";
+  } else if (name == "fast") {
+    s.precision = "float";
+    s.state_sites_per_pixel = 0.25;
+    s.substep_tolerance_deg = 0.25;
+    s.psf_model = "vos";
+    s.glare_engine = "split";
+    s.glare_tail_factor = 4;
+    s.glare_resolution = 0.5;
+    s.acuity.pyramid_from_px = 3.0;
+    s.sink.video.preset = "veryfast";
+  } else {
+    throw UsageError("--quality: '" + name + "' is not one of reference|balanced|fast");
+  }
+}
+
+}  // namespace eyestream::pipeline

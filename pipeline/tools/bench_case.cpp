@@ -1,0 +1,46 @@
+#include "pipeline/tools/bench_case.hpp"
+
+#include "pipeline/eye/eye_simulator.hpp"
+#include "pipeline/run/peak_memory.hpp"
+#include "retina/display_encoding.hpp"
+
+namespace eyestream::pipeline {
+
+BenchCase run_bench_case(const BenchScene& scene, const Settings& settings) {
+  BenchCase c;
+  reset_peak_resident();
+  const double resident_before = resident_mib();
+  auto clock = std::chrono::steady_clock::now();
+  const Plan plan = compile_plan(settings, scene.info);
+  EyeSimulator eye(plan);
+  c.setup_s = lap_ms(clock) / 1000.0;
+  cv::Mat code;
+  for (size_t i = 0; i < scene.frames.size(); ++i) {
+    FrameReport r;
+    io::DisplayFrame out = eye.process(scene.frames[i], scene.segments[i], &r);
+    lap_ms(clock);
+    retina::encode_display(out.linear, 8, scene.frames[i].index, plan.encoding, code);
+    c.encode_ms += lap_ms(clock);
+    c.filter_ms += r.times.total();
+    c.stage_ms += r.times;
+    c.glare_frames += r.active.glare;
+    c.retina_frames += r.active.retina;
+    c.afterimage_frames += r.active.afterimages;
+    c.mesopic_frames += r.active.mesopic;
+    c.acuity_frames += r.active.acuity;
+    c.shown.push_back(out.linear.isContinuous() ? out.linear : out.linear.clone());
+    ++c.frames;
+  }
+  c.memory_mib = peak_resident_mib() - resident_before;
+  const double n = std::max(c.frames, 1);
+  c.filter_ms /= n;
+  c.encode_ms /= n;
+  c.stage_ms *= 1.0 / n;
+  c.bleached = eye.retina().state().bleached().clone();
+  c.deficit = eye.retina().state().deficit().clone();
+  c.calcium_max = eye.retina().state().calcium_max();
+  c.sites_per_pixel = plan.retina.sites_per_pixel;
+  return c;
+}
+
+}  // namespace eyestream::pipeline

@@ -1,0 +1,28 @@
+// The input of one `eyestream bench` case: a built-in scene rendered at a
+// given size and held in memory, so reading files is not timed.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "io/frame.hpp"
+#include "io/frame_source.hpp"
+#include "pipeline/eye/gaze_timeline.hpp"
+
+namespace eyestream::pipeline {
+
+struct BenchScene {
+  std::string name;  // as `eyestream sample` knows it
+  io::SourceInfo info;
+  std::vector<io::SceneFrame> frames;
+  // The gaze during each frame's interval.
+  std::vector<std::vector<GazeSegment>> segments;
+};
+
+// Renders `frames` frames of the scene at width x height and 30 fps (the
+// scene's story compressed into them) in a scratch folder, loads them and
+// its gaze log, and removes the folder. `luminance_cd_m2` as for `sample`.
+BenchScene load_bench_scene(const std::string& scene, int width, int height, int frames,
+                            double luminance_cd_m2 = 0.0);
+
+}  // namespace eyestream::pipeline

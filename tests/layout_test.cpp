@@ -1,0 +1,67 @@
+// The source tree's floors: io, retina and glare never include each other
+// or pipeline; inside pipeline, geometry < settings < eye < run < tools <
+// api, and a folder includes only its own floor and those below it.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <string>
+#include <vector>
+
+namespace eyestream {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The project's includes of a file: "folder/.../name.hpp".
+std::vector<std::string> includes(const fs::path& file) {
+  std::ifstream in(file);
+  std::vector<std::string> found;
+  const std::regex line(R"(^\s*#\s*include\s*"([a-z_]+/[a-z_/0-9]+\.hpp)\")");
+  std::smatch m;
+  for (std::string s; std::getline(in, s);)
+    if (std::regex_search(s, m, line)) found.push_back(m[1]);
+  return found;
+}
+
+// The floor of a path relative to the source root ("pipeline/eye/x.hpp" -> "pipeline/eye").
+std::string floor_of(const std::string& relative) {
+  const size_t a = relative.find('/');
+  if (a == std::string::npos) return "";
+  const std::string top = relative.substr(0, a);
+  if (top != "pipeline") return top;
+  const size_t b = relative.find('/', a + 1);
+  return b == std::string::npos ? "pipeline" : relative.substr(0, b);
+}
+
+TEST(Layout, EveryFolderIncludesOnlyItsOwnFloorAndThoseBelow) {
+  const fs::path root = EYESTREAM_SOURCE_DIR;
+  // Rank by floor; the model's three libraries share rank 0 and may not
+  // include one another.
+  const std::map<std::string, int> rank = {
+      {"io", 0},          {"retina", 0},      {"glare", 0},       {"samples", 1},        {"pipeline/geometry", 2},
+      {"pipeline/settings", 3}, {"pipeline/eye", 4}, {"pipeline/run", 5}, {"pipeline/tools", 6}, {"pipeline/api", 7},
+      {"pipeline", 8}};
+  int checked = 0;
+  for (const std::string top : {"io", "retina", "glare", "pipeline"})
+    for (const auto& e : fs::recursive_directory_iterator(root / top)) {
+      const std::string ext = e.path().extension().string();
+      if (ext != ".cpp" && ext != ".hpp") continue;
+      const std::string self = fs::relative(e.path(), root).generic_string();
+      const std::string from = floor_of(self);
+      ASSERT_TRUE(rank.count(from)) << self << ": a folder the layout does not name";
+      for (const std::string& inc : includes(e.path())) {
+        const std::string to = floor_of(inc);
+        if (!rank.count(to) || to == from) continue;  // system-like paths, or the same floor
+        ++checked;
+        EXPECT_LT(rank.at(to), rank.at(from)) << self << " includes " << inc;
+        if (rank.at(from) == 0) ADD_FAILURE() << self << " includes " << inc << ": io, retina and glare stand alone";
+      }
+    }
+  EXPECT_GT(checked, 100) << "the includes were not found";
+}
+
+}  // namespace
+}  // namespace eyestream
