@@ -37,7 +37,7 @@ Imf::Chromaticities to_imf(const Chromaticities& c) {
 std::string channel_layout(const Imf::ChannelList& ch, const std::string& prefix) {
   const auto has = [&](const char* c) { return ch.findChannel(prefix + c) != nullptr; };
   if (has("R") && has("G") && has("B")) return has("A") ? "RGBA" : "RGB";
-  if (has("Y")) return "Y";
+  if (has("Y") && !has("X") && !has("Z")) return "Y";  // X, Y, Z: a vector (normals, positions), not light
   return "";
 }
 
@@ -73,8 +73,16 @@ std::string choose_layer(const std::string& path, const Imf::ChannelList& ch, co
                      (list.empty() ? std::string("none") : list));
   }
   if (std::find(layers.begin(), layers.end(), "") != layers.end()) return "";
+  std::vector<std::string> beauty;
   for (const std::string& l : layers)
-    if (ends_with(l, "Combined") || ends_with(l, "beauty") || ends_with(l, "RGBA") || ends_with(l, "rgba")) return l;
+    if (ends_with(l, "Combined") || ends_with(l, "beauty") || ends_with(l, "RGBA") || ends_with(l, "rgba"))
+      beauty.push_back(l);
+  if (beauty.size() == 1) return beauty.front();
+  if (beauty.size() > 1) {  // Blender: one Combined per view layer
+    std::string names;
+    for (const std::string& l : beauty) names += (names.empty() ? "" : ", ") + l;
+    throw InputError(path + ": several beauty passes (" + names + "); choose one with --layer");
+  }
   if (layers.size() == 1) return layers.front();
   if (layers.empty()) throw InputError(path + ": no R,G,B or Y channels");
   throw InputError(path + ": several colour layers (" + list + ") and no beauty pass; choose one with --layer");

@@ -101,7 +101,31 @@ std::vector<SequenceEntry> list_sequence(const std::string& input, const std::ve
       if (it->is_regular_file() && has_extension(it->path(), extensions)) names.push_back(it->path().string());
     if (names.empty()) throw InputError(input + ": folder holds no frame files");
     std::sort(names.begin(), names.end());
+    // Numbered files (frame_00010.exr ...) keep their numbers, as a pattern
+    // would give them; otherwise the position by name.
     std::vector<SequenceEntry> out;
+    for (size_t i = 0; i < names.size(); ++i) {
+      const std::string stem = fs::path(names[i]).stem().string();
+      const size_t digits = stem.find_last_not_of("0123456789") + 1;  // npos + 1 == 0: all digits
+      const size_t count = stem.size() - digits;
+      if (count == 0 || count > 12) {
+        out.clear();
+        break;
+      }
+      out.push_back({names[i], std::stoll(stem.substr(digits))});
+    }
+    std::sort(out.begin(), out.end(), [](const SequenceEntry& a, const SequenceEntry& b) { return a.number < b.number; });
+    for (size_t i = 1; i < out.size(); ++i) {
+      if (out[i].number == out[i - 1].number) {  // two names, one number: positions
+        out.clear();
+        break;
+      }
+      if (out[i].number != out[i - 1].number + 1 && !skip_missing)
+        throw InputError(input + ": no frame numbered " + std::to_string(out[i - 1].number + 1) +
+                         " between " + out[i - 1].path + " and " + out[i].path +
+                         " (use --skip-missing to go on without it)");
+    }
+    if (!out.empty()) return out;
     for (size_t i = 0; i < names.size(); ++i) out.push_back({names[i], std::int64_t(i)});
     return out;
   }

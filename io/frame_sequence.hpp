@@ -23,7 +23,8 @@ std::string format_pattern(const std::string& pattern, std::int64_t number);
 
 // Lists the frames of `input`: a printf pattern (the numbers found on disk,
 // from the smallest to the largest), a folder (its files ending in one of
-// `extensions`, by name), or a single file. A gap in a numbered sequence is
+// `extensions`: numbered by the digits their names end in when every name
+// has its own, else by their position by name), or a single file. A gap in a numbered sequence is
 // an InputError naming the first missing file, unless skip_missing.
 // No frame at all is an InputError naming `input`.
 std::vector<SequenceEntry> list_sequence(const std::string& input, const std::vector<std::string>& extensions,

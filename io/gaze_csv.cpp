@@ -39,6 +39,9 @@ std::vector<GazeSample> parse_gaze_csv(const std::string& text, const std::strin
     const std::string where = name + ":" + std::to_string(table.line_numbers[r]);
     if (int(f.size()) < needed)
       throw InputError(where + ": expected " + std::to_string(needed) + " fields, found " + std::to_string(f.size()));
+    if (f.size() > table.header.size())  // a column the header does not name would be dropped unseen
+      throw InputError(where + ": " + std::to_string(f.size()) + " fields, but the header names " +
+                       std::to_string(table.header.size()));
     GazeSample s;
     if (!parse_number(f[size_t(ct)], s.t_s)) throw InputError(where + ": time '" + f[size_t(ct)] + "' is not a number");
     s.state = (ce >= 0 && ce < int(f.size())) ? parse_event(f[size_t(ce)], where) : EyeState::kOpen;
@@ -57,6 +60,7 @@ std::vector<GazeSample> parse_gaze_csv(const std::string& text, const std::strin
       throw InputError(where + ": time " + f[size_t(ct)] + " s does not come after the previous sample's");
     out.push_back(s);
   }
+  if (out.empty()) throw InputError(name + ": no gaze samples (a header and no rows)");
   return out;
 }
 

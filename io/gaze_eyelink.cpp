@@ -50,10 +50,16 @@ std::vector<GazeSample> parse_eyelink(const std::string& text, const std::string
               parse_number(w[i + 4], b))
             screen_w = r - l + 1, screen_h = b - t + 1, display_coords = true;
         }
-      double t;
+      // "MSG time [offset] text": Experiment Builder writes an integer offset
+      // when the message was logged after its event, at time - offset.
+      double t, offset = 0;
+      const bool has_offset = w.size() >= 4 && w[2].find_first_not_of("-0123456789") == std::string::npos &&
+                              parse_number(w[2], offset);
+      const size_t text_at = line.find(w[has_offset ? 2 : 1], line.find(w[1]) + (has_offset ? w[1].size() : 0)) +
+                             w[has_offset ? 2 : 1].size();
       if (sync_s && !*sync_s && !o.sync_message.empty() && w.size() >= 3 &&
-          line.find(o.sync_message, line.find(w[1]) + w[1].size()) != std::string::npos && parse_number(w[1], t))
-        *sync_s = t * 1e-3;  // the stimulus onset the user marked
+          line.find(o.sync_message, text_at) != std::string::npos && parse_number(w[1], t))
+        *sync_s = (t - offset) * 1e-3;  // the stimulus onset the user marked
       continue;
     }
     if (w[0] == "PUPIL" && w.size() >= 2) {
@@ -63,7 +69,12 @@ std::vector<GazeSample> parse_eyelink(const std::string& text, const std::string
     if (w[0] == "START" || w[0] == "END") {
       recording = w[0] == "START" || !blocks;
       if (w[0] == "START") {
-        binocular = std::find(w.begin(), w.end(), "LEFT") != w.end() && std::find(w.begin(), w.end(), "RIGHT") != w.end();
+        const bool has_left = std::find(w.begin(), w.end(), "LEFT") != w.end(),
+                   has_right = std::find(w.begin(), w.end(), "RIGHT") != w.end();
+        binocular = has_left && has_right;
+        if (!binocular && o.eye != "average" && (has_left || has_right) && has_left != (o.eye == "left"))
+          throw UsageError("--gaze-eye " + o.eye + ": " + where + " records only the " +
+                           (has_left ? "left" : "right") + " eye");
         if (binocular && !said) notes.push_back("EyeLink: binocular, " + (o.eye == "average" ? std::string("the two eyes averaged") : o.eye + " eye") + " (--gaze-eye)");
         said = said || binocular;
       }

@@ -25,17 +25,22 @@ GazeSummary summarise_gaze(const std::vector<GazeSample>& samples, GazeFormat fo
   s.first_s = samples.front().t_s;
   s.last_s = samples.back().t_s;
   std::vector<double> intervals;
-  size_t lost = 0, closed = 0, open = 0, off = 0;
+  size_t lost = 0, closed = 0, open = 0, off = 0, open_in_video = 0, off_in_video = 0;
   for (size_t i = 0; i < samples.size(); ++i) {
     const GazeSample& g = samples[i];
     if (i > 0) intervals.push_back(g.t_s - samples[i - 1].t_s);
     if (g.state == EyeState::kLost) ++lost;
     else if (g.state == EyeState::kClosed) ++closed;
     else {
+      const bool is_off = g.x < 0 || g.y < 0 || g.x > w || g.y > h;
       ++open;
-      off += g.x < 0 || g.y < 0 || g.x > w || g.y > h;
+      off += is_off;
+      if (video_end_s >= 0 && g.t_s >= 0 && g.t_s <= video_end_s) ++open_in_video, off_in_video += is_off;
     }
   }
+  // The share that matters is the video's: a long log may look at the
+  // screen after the video has ended.
+  if (open_in_video > 0) open = open_in_video, off = off_in_video;
   if (!intervals.empty()) {
     std::nth_element(intervals.begin(), intervals.begin() + intervals.size() / 2, intervals.end());
     s.median_interval_s = intervals[intervals.size() / 2];
@@ -47,7 +52,7 @@ GazeSummary summarise_gaze(const std::vector<GazeSample>& samples, GazeFormat fo
   char text[256];
   if (s.off_frame_share > kOffFrameWarnShare) {
     std::snprintf(text, sizeof(text),
-                  "%.0f%% of the open-eye gaze samples fall off the %dx%d frame: check --gaze-units and "
+                  "%.0f%% of the open-eye gaze samples during the video fall off the %dx%d frame: check --gaze-units and "
                   "--gaze-source-width/--gaze-source-height",
                   100 * s.off_frame_share, w, h);
     s.warnings.push_back(text);

@@ -19,7 +19,7 @@ struct GazeSummary {
   double median_interval_s = 0.0;
   double first_s = 0.0, last_s = 0.0;
   double lost_share = 0.0, closed_share = 0.0;
-  double off_frame_share = 0.0;  // of the samples with the eye open and seen
+  double off_frame_share = 0.0;  // of the samples with the eye open and seen (during the video, when it has any)
   std::vector<std::string> warnings;
   std::vector<std::string> notes;  // what the reader assumed or took from elsewhere (GazeRead)
   std::string line() const;  // "gaze: tobii, 1200 samples at 120 Hz, ..."

@@ -12,8 +12,12 @@
 namespace eyestream::io {
 
 ImageSequenceSink::ImageSequenceSink(std::string pattern, ImageFormat format, std::int64_t first_number,
-                                     double frames_per_second)
-    : pattern_(std::move(pattern)), format_(format), first_number_(first_number), frames_per_second_(frames_per_second) {}
+                                     double frames_per_second, double png_gamma)
+    : pattern_(std::move(pattern)),
+      format_(format),
+      first_number_(first_number),
+      frames_per_second_(frames_per_second),
+      png_gamma_(png_gamma) {}
 
 SinkNeeds ImageSequenceSink::needs() const {
   switch (format_) {
@@ -48,7 +52,7 @@ void ImageSequenceSink::write(const DisplayFrame& frame) {
   } else {
     cv::Mat bgr;
     cv::cvtColor(frame.code, bgr, cv::COLOR_RGB2BGR);
-    const std::vector<unsigned char> bytes = encode_png(bgr);
+    const std::vector<unsigned char> bytes = encode_png(bgr, png_gamma_);
     if (bytes.empty()) throw OutputError(file.final_path().string() + ": PNG encoding failed");
     write_all(file, bytes);
   }

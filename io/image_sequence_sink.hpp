@@ -19,8 +19,9 @@ enum class ImageFormat { kPng8, kPng16, kExr };
 class ImageSequenceSink : public FrameSink {
  public:
   // EXR frames carry frames_per_second (when > 0) as framesPerSecond.
+  // PNG frames carry `png_gamma` (code = light^gamma) as their gAMA.
   ImageSequenceSink(std::string pattern, ImageFormat format, std::int64_t first_number = 0,
-                    double frames_per_second = 0.0);
+                    double frames_per_second = 0.0, double png_gamma = 1.0 / 2.2);
   SinkNeeds needs() const override;
   void write(const DisplayFrame& frame) override;
   void finish() override;
@@ -35,6 +36,7 @@ class ImageSequenceSink : public FrameSink {
   ImageFormat format_;
   std::int64_t first_number_;
   double frames_per_second_;
+  double png_gamma_;
   std::vector<std::pair<std::int64_t, std::int64_t>> staged_;  // [first, last] numbers
   std::int64_t staged_count_ = 0;
   std::int64_t written_ = 0;

@@ -1,6 +1,7 @@
 #include "io/png_file.hpp"
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <opencv2/imgcodecs.hpp>
 #include <vector>
@@ -44,15 +45,15 @@ std::vector<unsigned char> chunk(const char type[4], const std::vector<std::uint
 
 }  // namespace
 
-std::vector<unsigned char> encode_png(const cv::Mat& bgr) {
+std::vector<unsigned char> encode_png(const cv::Mat& bgr, double gamma) {
   std::vector<unsigned char> png;
   if (!cv::imencode(".png", bgr, png)) return {};
   // After the signature (8 bytes) and IHDR (4 + 4 + 13 + 4): the display
-  // encoding, a pure 1/2.2 power (retina/display_encoding.hpp), and the
-  // Rec.709 primaries with D65, in units of 1e-5.
+  // encoding's power (retina/display_encoding.hpp), and the Rec.709
+  // primaries with D65, in units of 1e-5.
   constexpr size_t kAfterHeader = 8 + 25;
   if (png.size() < kAfterHeader) return png;
-  const std::vector<unsigned char> gama = chunk("gAMA", {45455});
+  const std::vector<unsigned char> gama = chunk("gAMA", {std::uint32_t(std::lround(gamma * 100000))});
   const std::vector<unsigned char> chrm =
       chunk("cHRM", {31270, 32900, 64000, 33000, 30000, 60000, 15000, 6000});
   png.insert(png.begin() + kAfterHeader, chrm.begin(), chrm.end());

@@ -10,9 +10,10 @@
 namespace eyestream::io {
 
 // `bgr` (CV_8UC3, CV_16UC3 or one channel) as PNG bytes carrying gAMA
-// (1/2.2, the display encoding) and cHRM (Rec.709 primaries, D65) chunks,
-// so viewers know the colours; empty if encoding failed.
-std::vector<unsigned char> encode_png(const cv::Mat& bgr);
+// (the encoding's exponent: code = light^gamma) and cHRM (Rec.709
+// primaries, D65) chunks, so viewers know the colours; empty if encoding
+// failed.
+std::vector<unsigned char> encode_png(const cv::Mat& bgr, double gamma = 1.0 / 2.2);
 
 // Encodes `bgr` (CV_8UC3, or CV_8UC1) as PNG, writes it under a temporary
 // name and renames it to `path`; OutputError naming `path` on failure.

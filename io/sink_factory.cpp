@@ -26,7 +26,8 @@ std::unique_ptr<FrameSink> make_sink(const std::string& path, const SinkOptions&
   const std::string ext = output_kind(path);
   if (ext == ".mp4" || ext == ".mkv" || ext == ".stream") return std::make_unique<VideoWriter>(path, options.video);
   if (ext == ".png")
-    return std::make_unique<ImageSequenceSink>(path, options.png_bits == 16 ? ImageFormat::kPng16 : ImageFormat::kPng8);
+    return std::make_unique<ImageSequenceSink>(path, options.png_bits == 16 ? ImageFormat::kPng16 : ImageFormat::kPng8,
+                                               0, 0.0, options.png_gamma);
   return std::make_unique<ImageSequenceSink>(path, ImageFormat::kExr, 0, options.video.frames_per_second);
 }
 

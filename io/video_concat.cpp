@@ -3,8 +3,11 @@
 extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
+#include <libavutil/mastering_display_metadata.h>
 }
 
+#include <algorithm>
+#include <cstring>
 #include <memory>
 
 #include "io/error.hpp"
@@ -29,6 +32,44 @@ std::unique_ptr<InputFile> open_input(const std::string& path) {
   return in;
 }
 
+// The HDR metadata the joined video carries: the first chunk's mastering
+// display, and a content light level that is the largest of the chunks'
+// (MaxCLL is a maximum over frames, MaxFALL a maximum of frame means), or
+// none when a chunk has none.
+struct LightMetadata {
+  std::vector<uint8_t> mastering;
+  bool has_level = true;
+  AVContentLightMetadata level{};
+};
+
+LightMetadata light_metadata(const std::vector<std::string>& inputs) {
+  LightMetadata m;
+  for (size_t k = 0; k < inputs.size(); ++k) {
+    std::unique_ptr<InputFile> in = open_input(inputs[k]);
+    const AVStream* src = in->format->streams[in->stream];
+    size_t size = 0;
+    const uint8_t* d = av_stream_get_side_data(src, AV_PKT_DATA_MASTERING_DISPLAY_METADATA, &size);
+    if (k == 0 && d) m.mastering.assign(d, d + size);
+    d = av_stream_get_side_data(src, AV_PKT_DATA_CONTENT_LIGHT_LEVEL, &size);
+    if (!d || size < sizeof(AVContentLightMetadata)) {
+      m.has_level = false;
+      continue;
+    }
+    const auto* l = reinterpret_cast<const AVContentLightMetadata*>(d);
+    if (l->MaxCLL == 0 && l->MaxFALL == 0) m.has_level = false;  // 0: unknown
+    m.level.MaxCLL = std::max(m.level.MaxCLL, l->MaxCLL);
+    m.level.MaxFALL = std::max(m.level.MaxFALL, l->MaxFALL);
+  }
+  return m;
+}
+
+void add_side_data(AVStream* stream, AVPacketSideDataType type, const void* data, size_t size) {
+  uint8_t* copy = static_cast<uint8_t*>(av_malloc(size));
+  if (!copy) return;
+  std::memcpy(copy, data, size);
+  if (av_stream_add_side_data(stream, type, copy, size) < 0) av_free(copy);
+}
+
 }  // namespace
 
 void concat_videos(const std::vector<std::string>& inputs, const std::string& output) {
@@ -36,8 +77,10 @@ void concat_videos(const std::vector<std::string>& inputs, const std::string& ou
   for (const std::string& path : inputs) protect_input(path);
   StagedFile file(output);
   const std::string ext = file.final_path().extension().string();
+  const bool mkv = ext == ".mkv";
+  const LightMetadata light = light_metadata(inputs);
   AVFormatContext* out = nullptr;
-  if (avformat_alloc_output_context2(&out, nullptr, ext == ".mkv" ? "matroska" : "mp4",
+  if (avformat_alloc_output_context2(&out, nullptr, mkv ? "matroska" : "mp4",
                                      file.temp_path().c_str()) < 0)
     throw OutputError(output + ": cannot set up the container");
   struct Closer {
@@ -59,12 +102,22 @@ void concat_videos(const std::vector<std::string>& inputs, const std::string& ou
     const AVStream* src = in->format->streams[in->stream];
     if (!first) {
       if (avcodec_parameters_copy(stream->codecpar, src->codecpar) < 0) throw OutputError(output + ": out of memory");
-      stream->codecpar->codec_tag = 0;
+      // HEVC in MP4 as 'hvc1', as `run` writes it (Apple's players refuse 'hev1').
+      stream->codecpar->codec_tag =
+          !mkv && src->codecpar->codec_id == AV_CODEC_ID_HEVC ? MKTAG('h', 'v', 'c', '1') : 0;
       stream->time_base = src->time_base;
       stream->avg_frame_rate = src->avg_frame_rate;
+      if (!light.mastering.empty())
+        add_side_data(stream, AV_PKT_DATA_MASTERING_DISPLAY_METADATA, light.mastering.data(), light.mastering.size());
+      if (light.has_level)
+        add_side_data(stream, AV_PKT_DATA_CONTENT_LIGHT_LEVEL, &light.level, sizeof(light.level));
       if (avio_open(&out->pb, file.temp_path().c_str(), AVIO_FLAG_WRITE) < 0)
         throw OutputError(output + ": cannot open for writing");
-      if (avformat_write_header(out, nullptr) < 0) throw OutputError(output + ": cannot write the header");
+      AVDictionary* muxer = nullptr;
+      if (!mkv) av_dict_set(&muxer, "movflags", "faststart", 0);  // the index first, as `run` writes it
+      const int rc = avformat_write_header(out, &muxer);
+      av_dict_free(&muxer);
+      if (rc < 0) throw OutputError(output + ": cannot write the header");
       first = src->codecpar;
     } else if (src->codecpar->codec_id != first->codec_id || src->codecpar->width != first->width ||
                src->codecpar->height != first->height) {

@@ -92,6 +92,8 @@ int main(int argc, char** argv) {
   sample_cmd->footer(scene_list());
   sample_cmd->add_option("scene", scene_name, "scene name")->required();
   sample_cmd->add_option("-o,--output", scene.out_dir, "output folder")->required();
+  bool replace_scene = false;
+  sample_cmd->add_flag("-y,--overwrite", replace_scene, "replace a scene the folder holds (its old frames go)");
   sample_cmd->add_option("--width", scene.width, "frame width [px]")->check(CLI::Range(16, 8192));
   sample_cmd->add_option("--height", scene.height, "frame height [px]")->check(CLI::Range(16, 8192));
   sample_cmd->add_option("--fps", scene.fps, "frame rate [1/s]")->check(CLI::Range(1.0, 1000.0));
@@ -303,6 +305,9 @@ int main(int argc, char** argv) {
       }
     } else if (*sample_cmd) {
       const samples::Scene& s = samples::find_scene(scene_name);
+      if (!replace_scene)
+        refuse_existing({{scene.out_dir + "/gaze.csv", "the scene's gaze log"},
+                         {scene.out_dir + "/frames/%05d.exr", "the scene's frames"}});
       s.generate(scene);
       std::fprintf(stderr, "eyestream: wrote scene %s to %s\n", s.name.c_str(), scene.out_dir.c_str());
     }

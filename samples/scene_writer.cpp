@@ -30,6 +30,17 @@ void SceneWriter::finish(const std::vector<io::GazeSample>& gaze) {
   io::write_gaze_csv(dir_ + "/gaze.csv", gaze);
   for (io::StagedFile& f : files_) f.commit();
   files_.clear();
+  // A scene written over a longer one: its frames beyond this one's go, so
+  // the folder holds one scene.
+  for (const char* kind : {"frames", "target"}) {
+    const std::filesystem::path folder = std::filesystem::path(dir_) / kind;
+    if (!std::filesystem::is_directory(folder)) continue;
+    for (const auto& e : std::filesystem::directory_iterator(folder)) {
+      const std::string stem = e.path().stem().string();
+      const bool numbered = stem.size() == 5 && stem.find_first_not_of("0123456789") == std::string::npos;
+      if (numbered && std::stoll(stem) >= frames_) std::filesystem::remove(e.path());
+    }
+  }
 }
 
 }  // namespace eyestream::samples

@@ -8,7 +8,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 dir=out/night-drive-long
-build/eyestream sample night-drive-long -o "$dir/scene"
+build/eyestream sample -y night-drive-long -o "$dir/scene"
 build/eyestream run -y -i "$dir/scene/frames/%05d.exr" -g "$dir/scene/gaze.csv" -o "$dir/preview.mp4" \
   --viewers 25,75 --gaze-overlay --timecode \
   --report "$dir/report.csv" --target-mask "$dir/scene/target" "$@"

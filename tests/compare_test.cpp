@@ -130,6 +130,12 @@ TEST(Compare, DiffMapsAreNamedByTheInputsFrameNumbers) {
   std::ifstream in(dir / "r.json");
   const nlohmann::json j = nlohmann::json::parse(in);
   EXPECT_EQ(j["frames"][0]["frame"], 120);
+  // Folders of numbered files keep the numbers, as their pattern would.
+  const auto f = test::run_eyestream("compare " + (dir / "a") + " " + (dir / "b") + " --diff-out " +
+                                     (dir / "folder/%05d.png"));
+  ASSERT_EQ(f.exit_code, 0) << f.output;
+  EXPECT_TRUE(std::filesystem::exists(dir / "folder/00120.png"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "folder/00000.png"));
 }
 
 // Flat colours encoded as BT.709 limited-range 4:2:0 H.264 decode back to

@@ -44,6 +44,27 @@ TEST(ExrLayers, TheBeautyPassByDefaultAndAnyColourLayerByName) {
   }
 }
 
+// Blender with two view layers writes a Combined for each: no guessing.
+// A normal pass (X, Y, Z) is a vector, not a colour layer.
+TEST(ExrLayers, TwoViewLayersBeautyPassesAreRefusedAndNormalsAreNotColour) {
+  test::ScratchDir dir;
+  write_exr_channels(dir / "views.exr",
+                     {{"ViewLayer.Combined.R", plane(10)}, {"ViewLayer.Combined.G", plane(10)},
+                      {"ViewLayer.Combined.B", plane(10)}, {"Background.Combined.R", plane(90)},
+                      {"Background.Combined.G", plane(90)}, {"Background.Combined.B", plane(90)}});
+  try {
+    read_exr(dir / "views.exr", 1000);
+    FAIL() << "two beauty passes (EXR lists channels by name)";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("several beauty passes (Background.Combined, ViewLayer.Combined)"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(read_exr(dir / "views.exr", 1000, "Background.Combined").rgb.at<cv::Vec3f>(0, 0), cv::Vec3f(90, 90, 90));
+  write_blender_like(dir / "f.exr");
+  EXPECT_THROW(read_exr(dir / "f.exr", 1000, "ViewLayer.Normal"), InputError);
+}
+
 TEST(ExrLayers, SeveralColourLayersAndNoBeautyPassAreRefusedListingThem) {
   test::ScratchDir dir;
   write_exr_channels(dir / "two.exr", {{"left.R", plane(1)}, {"left.G", plane(1)}, {"left.B", plane(1)},

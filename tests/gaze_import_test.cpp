@@ -138,6 +138,19 @@ TEST(GazeImport, RealEyeLinkStructureCalibrationBlocksAndAMessageToSyncOn) {
   const auto synced = parse_gaze(kRealAsc, "s01.asc", o);
   EXPECT_NEAR(synced[2].t_s, 0.0, 1e-12) << "the TRIAL_START message is frame 0";
   EXPECT_NEAR(synced[0].t_s, -0.010, 1e-12);
+  // Experiment Builder's offset form: logged 10 ms after its event, which is at 1288010 - 10.
+  std::string offset_form = kRealAsc;
+  const std::string plain = "MSG\t1288010 TRIAL_START";
+  offset_form.replace(offset_form.find(plain), plain.size(), "MSG\t1288010 10 TRIAL_START");
+  const auto early = parse_gaze(offset_form, "s01.asc", o);
+  EXPECT_NEAR(early[2].t_s, 0.010, 1e-12) << "MSG time offset: the onset is at time - offset";
+  // A file recording only the left eye, asked for the right: refused.
+  GazeImportOptions right = o;
+  right.sync_message.clear();
+  right.eye = "right";
+  EXPECT_THROW(parse_gaze(kRealAsc, "s01.asc", right), UsageError);
+  right.eye = "left";
+  EXPECT_EQ(parse_gaze(kRealAsc, "s01.asc", right).size(), 4u);
   o.sync_message = "NO_SUCH_MESSAGE";
   try {
     parse_gaze(kRealAsc, "s01.asc", o);

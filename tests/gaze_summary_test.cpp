@@ -47,8 +47,15 @@ TEST_F(GazeSummaryCli, APlausibleLogIsSummarisedWithoutWarnings) {
 TEST_F(GazeSummaryCli, OffFrameNonOverlappingAndImplausibleLogsAreWarnedAbout) {
   auto r = run_with(log_of(0, 1, 0.01, 640, 360));  // normalised-looking units taken as pixels of a bigger frame
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(r.output.find("warning: 100% of the open-eye gaze samples fall off the 64x36 frame"), std::string::npos)
+  EXPECT_NE(r.output.find("warning: 100% of the open-eye gaze samples during the video fall off the 64x36 frame"), std::string::npos)
       << r.output;
+  // Off the frame during the 1 s video, on it for the 9 s after: the video's share counts.
+  r = run_with(log_of(0, 1, 0.01, 640, 360) + log_of(1.005, 10, 0.01, 32, 18).substr(6));
+  EXPECT_NE(r.output.find("warning: 100% of the open-eye gaze samples during the video fall off"), std::string::npos)
+      << r.output;
+  r = run_with("t,x,y\n");
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_NE(r.output.find("g.csv: no gaze samples"), std::string::npos) << r.output;
   r = run_with(log_of(50, 51, 0.01, 32, 18));
   EXPECT_NE(r.output.find("warning: the gaze log (50.000 to 51.000 s) does not overlap the video (0 to 1.000 s)"),
             std::string::npos)

@@ -35,6 +35,22 @@ TEST(Overwrite, AnExistingOutputIsRefusedUnlessAskedAndLeftAsItWas) {
   EXPECT_EQ(test::run_eyestream(run + (dir / "f/%05d.png") + " --overwrite").exit_code, 0);
 }
 
+// `sample` into a folder holding a scene: refused without -y; with -y the
+// folder holds the new scene alone (a shorter one leaves no old frames).
+TEST(Overwrite, ASampleReplacesAnotherOnlyWithYAndLeavesNoStaleFrames) {
+  test::ScratchDir dir;
+  const std::string sample = "sample night-drive -o " + (dir / "s") + " --width 32 --height 18 --fps 10 --duration ";
+  ASSERT_EQ(test::run_eyestream(sample + "1").exit_code, 0);
+  ASSERT_EQ(test::count_entries(dir.path() / "s/frames"), 10);
+  auto r = test::run_eyestream(sample + "0.5");
+  EXPECT_EQ(r.exit_code, 4) << r.output;
+  EXPECT_NE(r.output.find("exists; pass -y (--overwrite)"), std::string::npos) << r.output;
+  EXPECT_EQ(test::count_entries(dir.path() / "s/frames"), 10) << "left as it was";
+  r = test::run_eyestream(sample + "0.5 -y");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(test::count_entries(dir.path() / "s/frames"), 5) << "the longer scene's frames are gone";
+}
+
 TEST(Overwrite, AnOutputNamedForAnotherFormatIsRefused) {
   test::ScratchDir dir;
   auto r = test::run_eyestream("curves -o " + (dir / "c.svg"));

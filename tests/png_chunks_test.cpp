@@ -1,5 +1,5 @@
-// Outputs say what they hold: PNG frames carry gAMA (the 1/2.2 display
-// encoding) and cHRM (Rec.709, D65) chunks, checked by walking the file's
+// Outputs say what they hold: PNG frames carry gAMA (the display encoding's
+// power, --gamma) and cHRM (Rec.709, D65) chunks, checked by walking the file's
 // chunks with zlib's CRC-32 as the oracle, and EXR frames carry the run's
 // frame rate.
 #include <gtest/gtest.h>
@@ -57,10 +57,14 @@ TEST(OutputTags, PngFramesCarryGammaAndChromaticitiesExrFramesTheirRate) {
     EXPECT_EQ(order[1], "gAMA");
     EXPECT_EQ(order[2], "cHRM");
     EXPECT_EQ(order.back(), "IEND");
-    EXPECT_EQ(chunks[1].words, std::vector<std::uint32_t>{45455});
+    EXPECT_EQ(chunks[1].words, std::vector<std::uint32_t>{45500}) << "the default encoding, code = light^0.455";
     EXPECT_EQ(chunks[2].words, (std::vector<std::uint32_t>{31270, 32900, 64000, 33000, 30000, 60000, 15000, 6000}));
     EXPECT_FALSE(cv::imread(out + "/00000.png", cv::IMREAD_UNCHANGED).empty());
   }
+  // Another encoding power, another gAMA.
+  ASSERT_EQ(test::run_eyestream("run -i " + (dir / "h/frames") + " -o " + (dir / "g/%05d.png") + " --gamma 0.6").exit_code,
+            0);
+  EXPECT_EQ(chunks_of(test::read_bytes(dir / "g/00000.png"))[1].words, std::vector<std::uint32_t>{60000});
   ASSERT_EQ(test::run_eyestream("run -i " + (dir / "h/frames") + " --fps 24 -o " + (dir / "e/%05d.exr")).exit_code, 0);
   const io::ExrImage e = io::read_exr(dir / "e/00000.exr", 1000000);
   ASSERT_TRUE(e.frames_per_second.has_value());

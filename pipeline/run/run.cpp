@@ -196,6 +196,7 @@ RunSummary run(const Settings& s) {
   }
   io::SinkOptions sink_options = s.sink;
   sink_options.video.frames_per_second = info.frames_per_second;
+  sink_options.png_gamma = s.encoding.gamma;
   std::unique_ptr<io::FrameSink> sink = io::make_sink(s.output, sink_options);
   if (overlap_io(s)) sink = std::make_unique<io::BackgroundSink>(std::move(sink));
   PreviewRenderer renderer(s, info, sink->needs());
