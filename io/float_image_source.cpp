@@ -6,6 +6,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "io/error.hpp"
+#include "io/float_tiff.hpp"
 #include "io/float_image_header.hpp"
 #include "io/staged_file.hpp"
 
@@ -56,23 +57,32 @@ std::optional<SceneFrame> FloatImageSource::next() {
   if (declared.width * std::int64_t(declared.height) > options_.max_pixels)
     throw InputError(entry.path + ": " + std::to_string(declared.width) + "x" + std::to_string(declared.height) +
                      " exceeds the limit of " + std::to_string(options_.max_pixels) + " pixels (--max-pixels)");
-  cv::Mat bgr;
-  try {
-    bgr = cv::imread(entry.path, cv::IMREAD_UNCHANGED);
-  } catch (const cv::Exception&) {
-    throw InputError(entry.path + ": cannot read as a floating-point RGB image");
+  // TIFF through libtiff (float_tiff.hpp); Radiance .hdr and PFM through OpenCV.
+  const bool tiff = lower_extension(entry.path) == ".tif" || lower_extension(entry.path) == ".tiff";
+  cv::Mat image;
+  if (tiff) {
+    image = read_float_tiff(entry.path);
+  } else {
+    try {
+      image = cv::imread(entry.path, cv::IMREAD_UNCHANGED);
+    } catch (const cv::Exception&) {
+      throw InputError(entry.path + ": cannot read as a floating-point RGB image");
+    }
+    if (image.empty() || image.depth() != CV_32F || (image.channels() != 3 && image.channels() != 1))
+      throw InputError(entry.path + ": cannot read as a floating-point RGB image");
   }
-  if (bgr.empty() || bgr.depth() != CV_32F || (bgr.channels() != 3 && bgr.channels() != 1))
-    throw InputError(entry.path + ": cannot read as a floating-point RGB image");
-  if (index == 0 && info_.width == 0) info_.width = bgr.cols, info_.height = bgr.rows;
-  if (bgr.cols * std::int64_t(bgr.rows) > options_.max_pixels)
+  if (index == 0 && info_.width == 0) info_.width = image.cols, info_.height = image.rows;
+  if (image.cols * std::int64_t(image.rows) > options_.max_pixels)
     throw InputError(entry.path + ": exceeds --max-pixels");
-  if (bgr.cols != info_.width || bgr.rows != info_.height)
-    throw InputError(entry.path + ": frame " + std::to_string(index) + " is " + std::to_string(bgr.cols) + "x" +
-                     std::to_string(bgr.rows) + ", the sequence began at " + std::to_string(info_.width) + "x" +
+  if (image.cols != info_.width || image.rows != info_.height)
+    throw InputError(entry.path + ": frame " + std::to_string(index) + " is " + std::to_string(image.cols) + "x" +
+                     std::to_string(image.rows) + ", the sequence began at " + std::to_string(info_.width) + "x" +
                      std::to_string(info_.height));
   SceneFrame f;
-  cv::cvtColor(bgr, f.rgb, bgr.channels() == 1 ? cv::COLOR_GRAY2RGB : cv::COLOR_BGR2RGB);
+  if (tiff)
+    f.rgb = image;
+  else
+    cv::cvtColor(image, f.rgb, image.channels() == 1 ? cv::COLOR_GRAY2RGB : cv::COLOR_BGR2RGB);
   const double scale = options_.scale.value_or(lower_extension(entry.path) == ".hdr" ? 179.0 : 1.0);
   if (scale != 1.0) f.rgb *= scale;
   f.index = index;

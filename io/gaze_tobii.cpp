@@ -56,8 +56,26 @@ std::vector<GazeSample> parse_tobii(const std::string& text, const std::string& 
   const double to_s = micro ? 1e-6 : 1e-3;
   const int cl = t.column("Validity left"), cr = t.column("Validity right");
   const int pl = t.column("Pupil diameter left", true), pr = t.column("Pupil diameter right", true);
-  const double sx = o.source_width > 0 ? double(o.frame_width) / o.source_width : 1.0;
-  const double sy = o.source_height > 0 ? double(o.frame_height) / o.source_height : 1.0;
+  // The screen the gaze is in: --gaze-source-width/height, else the export's
+  // "Recording resolution width/height" (the first row that has them), else
+  // the frame itself.
+  double source_w = o.source_width, source_h = o.source_height;
+  const int rw = t.column("Recording resolution width", true), rh = t.column("Recording resolution height", true);
+  if (rw >= 0 && rh >= 0 && (source_w <= 0 || source_h <= 0))
+    for (const std::vector<std::string>& row : t.rows) {
+      double w = 0, h = 0;
+      if (rw < int(row.size()) && rh < int(row.size()) && parse_number(row[size_t(rw)], w, true) &&
+          parse_number(row[size_t(rh)], h, true) && w > 0 && h > 0) {
+        if (source_w <= 0) source_w = w;
+        if (source_h <= 0) source_h = h;
+        char note[128];
+        std::snprintf(note, sizeof note, "the screen is %gx%g px, from Recording resolution", source_w, source_h);
+        notes.push_back(note);
+        break;
+      }
+    }
+  const double sx = source_w > 0 ? double(o.frame_width) / source_w : 1.0;
+  const double sy = source_h > 0 ? double(o.frame_height) / source_h : 1.0;
   auto invalid = [&](const std::vector<std::string>& row, int c) {
     return c >= 0 && c < int(row.size()) && row[size_t(c)] == "Invalid";
   };

@@ -23,6 +23,9 @@ std::unique_ptr<FrameSource> open_source(const std::string& input, const SourceO
     raw.stop_on_truncated = o.video.on_bad_video == "stop";
     return std::make_unique<RawStreamSource>(stdin, "standard input", raw);
   }
+  if (!o.raw_size.empty())  // the size of files and videos is their own
+    throw UsageError("--size " + o.raw_size + ": only raw frames on standard input (-i -) need it; " + input +
+                     " gives its own");
   if (is_float_image_input(input)) return std::make_unique<FloatImageSource>(input, o.exr);
   if (is_printf_pattern(input) || lower_extension(input) == ".exr" || std::filesystem::is_directory(input) ||
       !std::filesystem::exists(input))

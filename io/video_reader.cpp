@@ -20,6 +20,12 @@ namespace {
 
 std::string name_or_unknown(const char* s) { return s ? s : "unknown"; }
 
+std::string av_error_text(int code) {
+  char buf[AV_ERROR_MAX_STRING_SIZE] = {0};
+  av_strerror(code, buf, sizeof(buf));
+  return buf;
+}
+
 // libswscale's YUV->RGB coefficients for the stream's matrix.
 int sws_matrix(AVColorSpace space) {
   switch (space) {
@@ -103,7 +109,7 @@ struct VideoReader::Impl {
       if (packet->stream_index == stream) {
         const int sent = avcodec_send_packet(codec, packet);
         if (sent < 0 && sent != AVERROR(EAGAIN))
-          fail("frame " + std::to_string(decoded) + ": corrupt packet (" + std::to_string(sent) + ")");
+          fail("frame " + std::to_string(decoded) + ": corrupt packet (" + av_error_text(sent) + ")");
       }
       av_packet_unref(packet);
     }

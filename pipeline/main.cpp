@@ -93,7 +93,12 @@ int main(int argc, char** argv) {
   sample_cmd->add_option("scene", scene_name, "scene name")->required();
   sample_cmd->add_option("-o,--output", scene.out_dir, "output folder")->required();
   bool replace_scene = false;
+  bool quiet_tool = false;  // --quiet for the commands other than run: no informational line on stderr
+  const auto add_quiet = [&quiet_tool](CLI::App* cmd) {
+    cmd->add_flag("-q,--quiet", quiet_tool, "nothing on stderr but warnings and errors");
+  };
   sample_cmd->add_flag("-y,--overwrite", replace_scene, "replace a scene the folder holds (its old frames go)");
+  add_quiet(sample_cmd);
   sample_cmd->add_option("--width", scene.width, "frame width [px]")->check(CLI::Range(16, 8192));
   sample_cmd->add_option("--height", scene.height, "frame height [px]")->check(CLI::Range(16, 8192));
   sample_cmd->add_option("--fps", scene.fps, "frame rate [1/s]")->check(CLI::Range(1.0, 1000.0));
@@ -129,6 +134,7 @@ int main(int argc, char** argv) {
   report_cmd->add_option("csv", report_csv, "the report CSV of `eyestream run --report`")->required();
   report_cmd->add_option("-o,--output", report_png, "PNG file (default: the CSV's name with .png)");
   report_cmd->add_flag("-y,--overwrite", replace_files, "replace the output if it exists");
+  add_quiet(report_cmd);
 
   CompareOptions cmp;
   CLI::App* compare_cmd = app.add_subcommand(
@@ -174,6 +180,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   chunks_cmd->add_option("run-options", chunks.run_options, "options for every chunk's run, after --");
   chunks_cmd->allow_extras(false);
+  add_quiet(chunks_cmd);
 
   std::vector<std::string> concat_inputs;
   std::string concat_output;
@@ -182,6 +189,7 @@ int main(int argc, char** argv) {
   concat_cmd->add_option("-o,--output", concat_output, "the joined video (.mp4 or .mkv)")->required();
   concat_cmd->add_flag("-y,--overwrite", replace_files, "replace the output if it exists");
   concat_cmd->add_option("inputs", concat_inputs, "chunk videos in order")->required();
+  add_quiet(concat_cmd);
 
   BenchRequest bench;
   int bench_threads = 0;
@@ -201,6 +209,7 @@ int main(int argc, char** argv) {
   bench_cmd->add_option("--png", bench.png, "draw error against time per frame (PNG)");
   bench_cmd->add_flag("-y,--overwrite", replace_files, "replace the CSV and the chart if they exist");
   bench_cmd->add_option("--threads", bench_threads, "worker threads; 0 uses all cores")->check(CLI::Range(0, 1024));
+  add_quiet(bench_cmd);
 
   std::string reference_format = "md", reference_output;
   CLI::App* reference_cmd = app.add_subcommand(
@@ -249,6 +258,7 @@ int main(int argc, char** argv) {
       if (!bench.png.empty()) require_extension(bench.png, {".png"}, "--png"), outputs.push_back({bench.png, "--png"});
       if (!replace_files) refuse_existing(outputs);  // before minutes of work
       cv::setNumThreads(bench_threads > 0 ? bench_threads : -1);
+      bench.quiet = quiet_tool;
       const std::vector<BenchRow> rows = run_bench(bench);
       std::printf("%s", bench_table(rows).c_str());
       if (!bench.csv.empty()) write_bench_csv(rows, bench.csv);
@@ -280,19 +290,21 @@ int main(int argc, char** argv) {
       const std::unique_ptr<io::FrameSource> source = io::open_source(chunks.input, io::SourceOptions{});
       const std::vector<Chunk> plan = plan_chunks(chunks, source->info().frame_count);
       for (const Chunk& c : plan) std::printf("%s\n", c.command.c_str());
-      std::fprintf(stderr, "eyestream: %zu chunks of up to %lld frames, %.2f s pre-roll each\n", plan.size(),
-                   (long long)chunks.chunk_frames, chunks.preroll_s);
+      if (!quiet_tool)
+        std::fprintf(stderr, "eyestream: %zu chunks of up to %lld frames, %.2f s pre-roll each\n", plan.size(),
+                     (long long)chunks.chunk_frames, chunks.preroll_s);
     } else if (*concat_cmd) {
       require_extension(concat_output, {".mp4", ".mkv"}, "concat -o");
       if (!replace_files) refuse_existing({{concat_output, "-o"}});
       io::concat_videos(concat_inputs, concat_output);
-      std::fprintf(stderr, "eyestream: joined %zu videos into %s\n", concat_inputs.size(), concat_output.c_str());
+      if (!quiet_tool)
+        std::fprintf(stderr, "eyestream: joined %zu videos into %s\n", concat_inputs.size(), concat_output.c_str());
     } else if (*report_cmd) {
       if (report_png.empty()) report_png = std::filesystem::path(report_csv).replace_extension(".png").string();
       require_extension(report_png, {".png"}, "report -o");
       if (!replace_files) refuse_existing({{report_png, "-o"}});
       draw_report_file(report_csv, report_png);
-      std::fprintf(stderr, "eyestream: wrote %s\n", report_png.c_str());
+      if (!quiet_tool) std::fprintf(stderr, "eyestream: wrote %s\n", report_png.c_str());
     } else if (*reference_cmd) {
       const std::string text = reference_format == "man" ? man_page(app) : markdown_reference(app);
       if (reference_output.empty()) {
@@ -309,7 +321,7 @@ int main(int argc, char** argv) {
         refuse_existing({{scene.out_dir + "/gaze.csv", "the scene's gaze log"},
                          {scene.out_dir + "/frames/%05d.exr", "the scene's frames"}});
       s.generate(scene);
-      std::fprintf(stderr, "eyestream: wrote scene %s to %s\n", s.name.c_str(), scene.out_dir.c_str());
+      if (!quiet_tool) std::fprintf(stderr, "eyestream: wrote scene %s to %s\n", s.name.c_str(), scene.out_dir.c_str());
     }
     return kExitOk;
   } catch (const Interrupted& e) {

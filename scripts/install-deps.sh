@@ -7,6 +7,7 @@ packages=(
   build-essential cmake ninja-build pkg-config git time
   libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev
   libopenexr-dev
+  libtiff-dev  # float TIFF stills (half floats, alpha), which OpenCV's reader refuses
   libavformat-dev libavcodec-dev libavutil-dev libswscale-dev
   libeigen3-dev libfftw3-dev
   libcli11-dev nlohmann-json3-dev

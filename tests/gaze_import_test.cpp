@@ -67,6 +67,21 @@ TEST(GazeImport, TobiiMicrosecondsDecimalCommasAndValidity) {
   EXPECT_EQ(s[2].state, EyeState::kOpen) << "one valid eye is enough";
 }
 
+// Tobii Pro Lab exports name the screen: "Recording resolution width/height".
+TEST(GazeImport, TobiiTakesTheScreenFromRecordingResolution) {
+  const std::string text =
+      "Recording timestamp [ms]\tRecording resolution height\tRecording resolution width\tGaze point X\tGaze point Y\n"
+      "100\t1200\t1920\t960\t600\n150\t1200\t1920\t1920\t0\n";
+  GazeRead read;
+  const auto s = parse_gaze(text, "export.tsv", frame_1000x500(), &read);
+  ASSERT_EQ(s.size(), 2u);
+  EXPECT_DOUBLE_EQ(s[0].x, 500.0) << "the 1920x1200 screen's centre is the frame's";
+  EXPECT_DOUBLE_EQ(s[0].y, 250.0);
+  EXPECT_DOUBLE_EQ(s[1].x, 1000.0);
+  ASSERT_FALSE(read.notes.empty());
+  EXPECT_NE(read.notes.back().find("1920x1200"), std::string::npos) << read.notes.back();
+}
+
 TEST(GazeImport, TobiiMillisecondsByDefault) {
   const std::string text = "Recording timestamp\tGaze point X\tGaze point Y\n100\t1\t2\n150\t3\t4\n";
   const auto s = parse_gaze(text, "export.tsv", frame_1000x500());

@@ -72,6 +72,9 @@ TEST_F(Interrupts, SigtermWritesACheckpointThatResumesToTheUninterruptedBytes) {
   }
   EXPECT_EQ(r.exit_code, 128 + SIGTERM) << r.output;
   EXPECT_EQ(test::count_entries(dir.path() / "part"), 5) << "frames 0-4 kept, no temporary";
+  EXPECT_NE(r.output.find("checkpoint " + (dir / "c.ckp") + " resumes at the next frame (--resume)"),
+            std::string::npos)
+      << r.output;
   r = test::run_eyestream(part + " --resume");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   ASSERT_EQ(test::count_entries(dir.path() / "part"), 30);

@@ -95,6 +95,9 @@ TEST(Parameters, AnUnknownKeySuggestsTheNearestOne) {
   EXPECT_NE(usage_error({}, dir / "close.json").find("did you mean 'adapt-rate-up'?"), std::string::npos);
   std::ofstream(dir / "far.json") << R"({"zzzzzzzzzz": 1})";
   EXPECT_EQ(usage_error({}, dir / "far.json").find("did you mean"), std::string::npos) << "nothing near";
+  std::ofstream(dir / "gaze.json") << R"({"gaze": "g.csv"})";
+  EXPECT_NE(usage_error({}, dir / "gaze.json").find("'gaze' goes on the command line (--gaze)"), std::string::npos)
+      << usage_error({}, dir / "gaze.json");
 }
 
 TEST(Parameters, EveryDeclarationHasHelpAndAValidDefault) {

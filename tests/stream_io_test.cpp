@@ -77,6 +77,10 @@ TEST(StreamInput, ATruncatedFrameOrAMissingSizeIsRefused) {
   EXPECT_NE(r.output.find("--size"), std::string::npos) << r.output;
   r = test::run_eyestream("run -i - --size 48by32 -o " + (dir / "out.mp4") + " < " + (dir / "short.raw"));
   EXPECT_EQ(r.exit_code, 2) << r.output;
+  // A file gives its own size: --size is refused rather than ignored.
+  r = test::run_eyestream("run -i " + (dir / "kept/00000.png") + " --size 48x32 -o " + (dir / "o2.mp4"));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--size 48x32: only raw frames on standard input"), std::string::npos) << r.output;
 }
 
 TEST(StreamOutput, VideoOnStandardOutputIsReadableMatroska) {

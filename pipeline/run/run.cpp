@@ -44,6 +44,7 @@ std::string RunSummary::one_line() const {
   else o << "eyestream: ";
   o << frames << " frames in " << wall_s << " s (" << (wall_s > 0 ? frames / wall_s : 0.0)
     << " fps) -> " << output << "; final adaptation " << final_adaptation_log << " log10 cd/m^2";
+  if (!checkpoint.empty()) o << "; checkpoint " << checkpoint << " resumes at the next frame (--resume)";
   if (nonfinite_pixels) o << "; " << nonfinite_pixels << " non-finite pixels shown black";
   return o.str();
 }
@@ -226,9 +227,11 @@ RunSummary run(const Settings& s) {
     if (InterruptGuard::received()) {
       summary.interrupted_by = InterruptGuard::received();
       // Where a resumed run would go on: a checkpoint at this frame.
-      if (!s.checkpoint.empty() && summary.frames > 0 && sink->commit_so_far())
+      if (!s.checkpoint.empty() && summary.frames > 0 && sink->commit_so_far()) {
         write_checkpoint(s.checkpoint, {identity, settings, current->index, report ? report->save() : nlohmann::json(),
                                         renderer.save()});
+        summary.checkpoint = s.checkpoint;
+      }
       break;
     }
     std::optional<io::SceneFrame> next = source->next();

@@ -17,6 +17,7 @@ struct RunSummary {
   std::string output;
   int interrupted_by = 0;  // the signal that stopped the run early (interrupts.hpp), or 0
   std::string gaze;        // what the gaze log held (gaze_summary.hpp), when there was one
+  std::string checkpoint;  // the checkpoint an interrupted run wrote, or ""
   std::string one_line() const;  // with the gaze log's line before it
 };
 

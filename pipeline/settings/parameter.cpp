@@ -189,6 +189,13 @@ std::string suggestion(const std::string& key, const std::vector<Param>& params)
 void ParamSet::apply_json(const nlohmann::json& object, const std::string& origin) {
   for (auto it = object.begin(); it != object.end(); ++it) {
     auto found = std::find_if(params_.begin(), params_.end(), [&](const Param& p) { return p.name == it.key(); });
+    // The run's inputs and outputs are named on its command line, not in a
+    // file of settings shared by runs.
+    static const char* const kCommandLineOnly[] = {"input", "gaze", "output", "config", "overwrite"};
+    for (const char* name : kCommandLineOnly)
+      if (found == params_.end() && it.key() == name)
+        throw UsageError(origin + ": '" + it.key() + "' goes on the command line (--" + it.key() +
+                         "), not in a parameter file");
     if (found == params_.end())
       throw UsageError(origin + ": unknown parameter '" + it.key() + "'" + suggestion(it.key(), params_));
     set_json(*found, it.value(), origin + ": ");

@@ -86,9 +86,9 @@ std::string describe_glare(const GlarePlan& g) {
       << (g.flare_lines ? " with flare lines" : "");
     if (g.tail_factor > 1)
       o << ", split engine (tail at 1/" << g.tail_factor << " resolution)";
-    if (g.plane_scale != 1.0) o << ", convolved at " << g.plane_scale << " of the frame's resolution";
     else
       o << ", exact FFT engine";
+    if (g.plane_scale != 1.0) o << ", convolved at " << g.plane_scale << " of the frame's resolution";
   }
   o << ", display peak " << g.display_peak_cd_m2 << " cd/m^2";
   return o.str();

@@ -29,24 +29,25 @@ Settings preset_settings(const std::string& preset, bool skip) {
 }
 
 BenchRow row_of(const std::string& scene, const std::string& size, const std::string& preset, bool skip,
-                BenchCase figures) {
+                BenchCase figures, bool quiet) {
   figures.shown.clear();
   BenchRow r{scene, size, preset, skip, "", std::move(figures), {}};
-  std::fprintf(stderr, "bench: %s %s %s%s: %.1f ms/frame\n", scene.c_str(), size.c_str(), preset.c_str(),
-               skip ? "" : " --no-skip", r.figures.filter_ms);
+  if (!quiet)
+    std::fprintf(stderr, "bench: %s %s %s%s: %.1f ms/frame\n", scene.c_str(), size.c_str(), preset.c_str(),
+                 skip ? "" : " --no-skip", r.figures.filter_ms);
   return r;
 }
 
 // Each preset on `scene` against the reference (run first if asked for).
 void presets_on(const BenchScene& scene, const std::string& size, const std::vector<std::string>& presets,
-                std::vector<BenchRow>& rows) {
+                bool quiet, std::vector<BenchRow>& rows) {
   std::optional<BenchCase> reference;
   for (const std::string& p : presets) {
     BenchCase c = run_bench_case(scene, preset_settings(p, true));
     ReferenceError e;
     if (p == "reference") reference = c;
     if (reference && p != "reference") e = error_against(*reference, c);
-    rows.push_back(row_of(scene.name, size, p, true, std::move(c)));
+    rows.push_back(row_of(scene.name, size, p, true, std::move(c), quiet));
     rows.back().error = e;
     rows.back().against = reference ? "reference" : "";
   }
@@ -54,12 +55,12 @@ void presets_on(const BenchScene& scene, const std::string& size, const std::vec
 
 // Balanced with and without skipping: the cost of a frame that needs
 // little against one that needs everything, and what skipping changes.
-void skip_study(const BenchScene& scene, const std::string& size, std::vector<BenchRow>& rows) {
+void skip_study(const BenchScene& scene, const std::string& size, bool quiet, std::vector<BenchRow>& rows) {
   const BenchCase off = run_bench_case(scene, preset_settings("balanced", false));
   BenchCase on = run_bench_case(scene, preset_settings("balanced", true));
   const ReferenceError e = error_against(off, on);
-  rows.push_back(row_of(scene.name, size, "balanced", false, off));
-  rows.push_back(row_of(scene.name, size, "balanced", true, std::move(on)));
+  rows.push_back(row_of(scene.name, size, "balanced", false, off, quiet));
+  rows.push_back(row_of(scene.name, size, "balanced", true, std::move(on), quiet));
   rows.back().error = e;
   rows.back().against = "balanced --no-skip";
 }
@@ -96,7 +97,7 @@ std::vector<BenchRow> run_bench(const BenchRequest& q) {
   for (const std::string& name : scenes)
     for (const std::string& size : sizes) {
       const cv::Size wh = parse_frame_size(size);
-      presets_on(load_bench_scene(name, wh.width, wh.height, q.frames), size, presets, rows);
+      presets_on(load_bench_scene(name, wh.width, wh.height, q.frames), size, presets, q.quiet, rows);
     }
   for (const std::string& size : sizes) {
     const cv::Size wh = parse_frame_size(size);
@@ -105,8 +106,8 @@ std::vector<BenchRow> run_bench(const BenchRequest& q) {
       // A dim still frame: the headlights scene with its lamps at half the
       // display peak, so nothing needs glare and the retina rests.
       const BenchScene dim = load_bench_scene("headlights", wh.width, wh.height, q.frames, 50.0);
-      skip_study(dim, size, rows);
-      skip_study(scene, size, rows);
+      skip_study(dim, size, q.quiet, rows);
+      skip_study(scene, size, q.quiet, rows);
     }
   }
   return rows;

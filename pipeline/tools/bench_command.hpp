@@ -17,6 +17,7 @@ struct BenchRequest {
   int frames = 8;
   bool skip_study = true;  // balanced with and without skipping, on a dim still frame and on the scene
   std::string csv, png;    // where the table and the chart go ("": not written)
+  bool quiet = false;      // no line per case on stderr
 };
 
 struct BenchRow {

@@ -1,0 +1,108 @@
+#include "io/float_tiff.hpp"
+
+#include <Imath/half.h>
+#include <tiffio.h>
+
+#include <cstdarg>
+#include <cstdio>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include "io/error.hpp"
+
+namespace eyestream::io {
+
+namespace {
+
+// libtiff reports through global handlers; they are silenced here and the
+// failure is named by the caller (one line on stderr, eyestream's own).
+void quiet(const char*, const char*, va_list) {}
+
+struct TiffCloser {
+  void operator()(TIFF* t) const { TIFFClose(t); }
+};
+
+// One sample as float, from 32- or 16-bit IEEE storage.
+float sample(const unsigned char* data, size_t index, int bits) {
+  if (bits == 32) return reinterpret_cast<const float*>(data)[index];
+  Imath::half h;
+  h.setBits(reinterpret_cast<const std::uint16_t*>(data)[index]);
+  return float(h);
+}
+
+}  // namespace
+
+cv::Mat read_float_tiff(const std::string& path) {
+  static std::once_flag silenced;
+  std::call_once(silenced, [] {
+    TIFFSetErrorHandler(quiet);
+    TIFFSetWarningHandler(quiet);
+  });
+  std::unique_ptr<TIFF, TiffCloser> tif(TIFFOpen(path.c_str(), "r"));
+  if (!tif) throw InputError(path + ": cannot open as a TIFF file");
+  std::uint32_t width = 0, height = 0;
+  std::uint16_t bits = 0, channels = 1, format = SAMPLEFORMAT_UINT, planar = PLANARCONFIG_CONTIG;
+  TIFFGetField(tif.get(), TIFFTAG_IMAGEWIDTH, &width);
+  TIFFGetField(tif.get(), TIFFTAG_IMAGELENGTH, &height);
+  TIFFGetFieldDefaulted(tif.get(), TIFFTAG_BITSPERSAMPLE, &bits);
+  TIFFGetFieldDefaulted(tif.get(), TIFFTAG_SAMPLESPERPIXEL, &channels);
+  TIFFGetFieldDefaulted(tif.get(), TIFFTAG_SAMPLEFORMAT, &format);
+  TIFFGetFieldDefaulted(tif.get(), TIFFTAG_PLANARCONFIG, &planar);
+  if (format != SAMPLEFORMAT_IEEEFP || (bits != 32 && bits != 16))
+    throw InputError(path + ": holds " + std::to_string(bits) + "-bit " +
+                     (format == SAMPLEFORMAT_IEEEFP ? "floating-point" : "integer") +
+                     " samples; eyestream reads 16- or 32-bit floating-point TIFFs (linear light)");
+  if (channels < 1 || channels > 4)
+    throw InputError(path + ": holds " + std::to_string(channels) + " samples a pixel (expected grey, RGB, +alpha)");
+  if (width == 0 || height == 0) throw InputError(path + ": has no pixels");
+  const int colour = channels >= 3 ? 3 : 1;  // the 2nd (grey) or 4th (RGB) is alpha
+  const size_t bytes = bits / 8;
+  cv::Mat rgb(int(height), int(width), CV_32FC3);
+  // Each sample plane (planar) or the interleaved pixels, read in libtiff's
+  // own units (tiles or strips), then placed.
+  const int planes = planar == PLANARCONFIG_SEPARATE ? channels : 1;
+  const int per_pixel = planar == PLANARCONFIG_SEPARATE ? 1 : channels;
+  const bool tiled = TIFFIsTiled(tif.get());
+  std::uint32_t unit_w = width, unit_h = 0;
+  if (tiled) {
+    TIFFGetField(tif.get(), TIFFTAG_TILEWIDTH, &unit_w);
+    TIFFGetField(tif.get(), TIFFTAG_TILELENGTH, &unit_h);
+  } else {
+    TIFFGetFieldDefaulted(tif.get(), TIFFTAG_ROWSPERSTRIP, &unit_h);
+    unit_h = std::min(unit_h, height);
+  }
+  if (unit_w == 0 || unit_h == 0) throw InputError(path + ": has no tile or strip size");
+  const tmsize_t unit_size = tiled ? TIFFTileSize(tif.get()) : TIFFStripSize(tif.get());
+  std::vector<unsigned char> buffer(static_cast<size_t>(unit_size));
+  for (int plane = 0; plane < planes; ++plane)
+    for (std::uint32_t y0 = 0; y0 < height; y0 += unit_h)
+      for (std::uint32_t x0 = 0; x0 < width; x0 += unit_w) {
+        const tmsize_t got =
+            tiled ? TIFFReadTile(tif.get(), buffer.data(), x0, y0, 0, std::uint16_t(plane))
+                  : TIFFReadEncodedStrip(tif.get(), TIFFComputeStrip(tif.get(), y0, std::uint16_t(plane)),
+                                         buffer.data(), unit_size);
+        if (got < 0)
+          throw InputError(path + ": cannot decode the " + (tiled ? "tile" : "strip") + " at row " +
+                           std::to_string(y0));
+        const std::uint32_t rows = std::min(unit_h, height - y0), cols = std::min(unit_w, width - x0);
+        if (size_t(got) < size_t((rows - 1) * unit_w + cols) * size_t(per_pixel) * bytes)
+          throw InputError(path + ": a " + (tiled ? "tile" : "strip") + " at row " + std::to_string(y0) + " is short");
+        for (std::uint32_t r = 0; r < rows; ++r) {
+          cv::Vec3f* out = rgb.ptr<cv::Vec3f>(int(y0 + r)) + x0;
+          for (std::uint32_t c = 0; c < cols; ++c) {
+            const size_t at = (size_t(r) * unit_w + c) * size_t(per_pixel);
+            if (planes > 1) {
+              if (plane < colour) out[c][plane] = sample(buffer.data(), at, bits);
+              if (colour == 1 && plane == 0) out[c][1] = out[c][2] = out[c][0];
+            } else {
+              for (int k = 0; k < colour; ++k) out[c][k] = sample(buffer.data(), at + size_t(k), bits);
+              if (colour == 1) out[c][1] = out[c][2] = out[c][0];
+            }
+          }
+        }
+      }
+  return rgb;
+}
+
+}  // namespace eyestream::io

@@ -1,0 +1,18 @@
+// Floating-point TIFF stills through libtiff (Debian's libtiff-dev): 32- and
+// 16-bit (half) IEEE samples, grey, grey + alpha, RGB or RGBA, strips or
+// tiles, interleaved or planar, any compression libtiff decodes. OpenCV's
+// reader refuses half floats and extra (alpha) samples and prints its own
+// lines on stderr before failing, so eyestream reads these itself.
+#pragma once
+
+#include <opencv2/core.hpp>
+#include <string>
+
+namespace eyestream::io {
+
+// The first image of the file as linear RGB, CV_32FC3 (R, G, B; grey is
+// copied to the three; alpha is dropped). InputError naming the file and
+// what it holds when the file is not a floating-point TIFF of that kind.
+cv::Mat read_float_tiff(const std::string& path);
+
+}  // namespace eyestream::io
