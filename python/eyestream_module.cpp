@@ -227,6 +227,29 @@ PYBIND11_MODULE(eyestream, m) {
       .def_property_readonly("fps", [](const PyEye& e) { return e.eye.fps(); });
 
   m.def(
+      "psf",
+      [](int width, int height, double adaptation, const py::kwargs& settings) {
+        std::map<std::string, std::string> named;
+        for (const auto& [k, v] : settings) named[k.cast<std::string>()] = setting_text(v);
+        eyestream::Psf p;
+        {
+          py::gil_scoped_release unlocked;
+          p = eyestream::psf(width, height, adaptation, named);
+        }
+        py::dict out;
+        out["kernel"] = to_numpy(p.kernel);
+        out["pixels_per_degree"] = p.pixels_per_degree;
+        out["pupil_mm"] = p.pupil_mm;
+        return out;
+      },
+      py::arg("width"), py::arg("height"), py::arg("adaptation") = 10.0,
+      "psf(width, height, adaptation=10.0, **settings) -> {'kernel', 'pixels_per_degree', 'pupil_mm'}\n\n"
+      "The viewer's point-spread function as the glare stage uses it for a width x height frame, the eye\n"
+      "adapted to `adaptation` cd/m^2; settings as for Eye (viewer_age=70, psf_model=\"cie\", ...). kernel:\n"
+      "float32 (2 height - 1) x (2 width - 1) x 3 (R, G, B), centred on (height - 1, width - 1); each\n"
+      "channel sums to the share of a pixel's light spread within the frame's reach.");
+
+  m.def(
       "parameters",
       [](const std::string& quality) {
         eyestream::pipeline::Settings s;

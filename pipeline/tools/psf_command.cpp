@@ -24,22 +24,22 @@ std::string PsfSummary::text() const {
   return o.str();
 }
 
-PsfSummary write_psf(const Settings& s, const PsfRequest& r) {
-  if (r.output.empty()) throw UsageError("psf: -o FILE.exr is required");
+ViewerPsf viewer_psf(const Settings& s, int width, int height, double adaptation_log) {
   io::SourceInfo frame;
-  frame.width = r.width;
-  frame.height = r.height;
+  frame.width = width;
+  frame.height = height;
   frame.frames_per_second = 30.0;
   const Plan plan = compile_plan(s, frame);
   const double ppd = plan.pixels_per_degree;
   const glare::EyeOptics optics = plan.eye_optics();
-  PsfSummary summary;
-  summary.pupil_mm = optics.pupil_mm(r.adaptation_log);
+  ViewerPsf psf;
+  psf.pixels_per_degree = ppd;
+  psf.summary.pupil_mm = optics.pupil_mm(adaptation_log);
   std::vector<cv::Mat> channels;
-  const cv::Point centre(r.width - 1, r.height - 1);
+  const cv::Point centre(width - 1, height - 1);
   if (plan.glare.gaussian) {
     // Yoshida et al. 2008's kernel, sigma in degrees, unit sum within the frame's reach.
-    cv::Mat g(2 * r.height - 1, 2 * r.width - 1, CV_32F);
+    cv::Mat g(2 * height - 1, 2 * width - 1, CV_32F);
     const double sigma = plan.glare.gaussian_sigma_deg * ppd;
     g.forEach<float>([&](float& v, const int* p) {
       v = float(std::exp(-(std::pow(p[1] - centre.x, 2) + std::pow(p[0] - centre.y, 2)) / (2 * sigma * sigma)));
@@ -47,8 +47,8 @@ PsfSummary write_psf(const Settings& s, const PsfRequest& r) {
     g /= cv::sum(g)[0];
     channels.assign(3, g);
   } else {
-    const glare::ComponentKernels k = glare::build_component_kernels(r.width, r.height, ppd, optics);
-    const glare::PsfWeights w = optics.weights(r.adaptation_log);
+    const glare::ComponentKernels k = glare::build_component_kernels(width, height, ppd, optics);
+    const glare::PsfWeights w = optics.weights(adaptation_log);
     for (int c = 0; c < 3; ++c) {
       cv::Mat kc;
       glare::combined_kernel(k, w, c).convertTo(kc, CV_32F);
@@ -60,10 +60,19 @@ PsfSummary write_psf(const Settings& s, const PsfRequest& r) {
     for (int x = 0; x < channels[1].cols; ++x) {
       const double t = std::hypot(x - centre.x, y - centre.y) / ppd;
       for (int i = 0; i < 3; ++i)
-        if (t <= radii[i]) summary.within[i] += channels[1].at<float>(y, x);
+        if (t <= radii[i]) psf.summary.within[i] += channels[1].at<float>(y, x);
     }
-  cv::Mat rgb;
-  cv::merge(channels, rgb);
+  cv::merge(channels, psf.kernel);
+  return psf;
+}
+
+PsfSummary write_psf(const Settings& s, const PsfRequest& r) {
+  if (r.output.empty()) throw UsageError("psf: -o FILE.exr is required");
+  const ViewerPsf psf = viewer_psf(s, r.width, r.height, r.adaptation_log);
+  const cv::Mat& rgb = psf.kernel;
+  std::vector<cv::Mat> channels;
+  cv::split(rgb, channels);
+  const PsfSummary summary = psf.summary;
   io::StagedFile exr(r.output);
   io::write_exr(exr.temp_path().string(), rgb, io::ExrWriteOptions{false, std::nullopt, std::nullopt});
   // The picture: log10(K / K_max) from -8 to 0, per channel, as 8-bit BGR.

@@ -2,6 +2,7 @@
 // uses it, for inspection.
 #pragma once
 
+#include <opencv2/core.hpp>
 #include <string>
 
 #include "pipeline/settings/settings.hpp"
@@ -19,6 +20,17 @@ struct PsfSummary {
   double within[3] = {0, 0, 0};  // energy within 0.05, 1 and 10 deg (green channel)
   std::string text() const;
 };
+
+// The kernel for `settings` (viewer, viewing condition) and a width x
+// height frame, adapted to 10^adaptation_log cd/m^2: R, G, B (CV_32FC3),
+// (2W-1) x (2H-1), its centre at (W-1, H-1), each channel's sum the share
+// of a pixel's light the glare spreads over the frame's reach.
+struct ViewerPsf {
+  cv::Mat kernel;
+  double pixels_per_degree = 0;
+  PsfSummary summary;
+};
+ViewerPsf viewer_psf(const Settings& settings, int width, int height, double adaptation_log);
 
 // Builds the kernel for `settings` (viewer, viewing condition) and writes
 // it as a float EXR (R, G, B; (2W-1) x (2H-1), centred) and a PNG of

@@ -250,6 +250,38 @@ class StateAndErrors(unittest.TestCase):
         self.assertIn("viewer_age [years]:", eyestream.Eye.__doc__)
         self.assertEqual(eyestream.parameters("fast") != eyestream.parameters("reference"), True)
 
+    def test_psf_is_cie_146s_equation_at_three_and_ten_degrees(self):
+        # CIE 146:2002's general disability glare equation, written out here:
+        # the light a pixel sends t degrees away, per steradian of the source.
+        def cie(t, age, p):
+            return 10 / t**3 + (5 / t**2 + 0.1 * p / t) * (1 + (age / 62.5) ** 4) + 0.0025 * p
+
+        for age in (25, 70):
+            out = eyestream.psf(256, 64, adaptation=100.0, psf_model="cie", viewer_age=age,
+                                viewer_pigmentation=0.5, flare_lines=False)
+            k, ppd = out["kernel"], out["pixels_per_degree"]
+            self.assertEqual(k.shape, (127, 511, 3))
+            self.assertEqual(k.dtype, np.float32)
+            self.assertEqual(np.unravel_index(np.argmax(k[:, :, 1]), k.shape[:2]), (63, 255))
+            pixel_sr = (np.pi / 180 / ppd) ** 2
+            for t in (1.0, 3.0, 10.0):
+                got = k[63, 255 + int(round(t * ppd)), 1] / pixel_sr
+                want = cie(round(t * ppd) / ppd, age, 0.5)
+                self.assertAlmostEqual(got / want, 1.0, delta=0.02, msg=f"age {age}, {t} deg")
+            self.assertGreater(out["pupil_mm"], 1.5)
+            # The flare lines move light around each ring, not off it: a
+            # ring's mean stays the equation's within 5 %.
+            lines = eyestream.psf(256, 64, adaptation=100.0, psf_model="cie", viewer_age=age,
+                                  viewer_pigmentation=0.5, flare_lines=True)["kernel"][:, :, 1]
+            yy, xx = np.mgrid[0:127, 0:511]
+            r = np.hypot(yy - 63, xx - 255) / ppd
+            for t in (1.0, 2.0, 3.0):
+                ring = (r > t - 0.1) & (r < t + 0.1)
+                ratio = (lines[ring] / pixel_sr / cie(r[ring], age, 0.5)).mean()
+                self.assertAlmostEqual(ratio, 1.0, delta=0.05, msg=f"flare lines, age {age}, {t} deg")
+        with self.assertRaises(eyestream.Error):
+            eyestream.psf(0, 10)
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -108,4 +108,18 @@ class Eye {
   std::unique_ptr<Impl> impl_;
 };
 
+// The viewer's point-spread function as the glare stage uses it (the
+// command line's `eyestream psf`): for a width x height frame seen under
+// `settings` (viewer, viewing condition, "psf-model", ...) by an eye
+// adapted to adaptation_cd_m2. The kernel is R, G, B (CV_32FC3) of
+// (2 height - 1) rows and (2 width - 1) columns, centred on (width - 1,
+// height - 1); each channel sums to the share of a pixel's light spread
+// within the frame's reach.
+struct Psf {
+  cv::Mat kernel;
+  double pixels_per_degree = 0.0;  // the frame's scale at its centre
+  double pupil_mm = 0.0;           // the pupil at that adaptation
+};
+Psf psf(int width, int height, double adaptation_cd_m2, const std::map<std::string, std::string>& settings = {});
+
 }  // namespace eyestream
