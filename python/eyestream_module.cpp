@@ -8,6 +8,7 @@
 #include <pybind11/stl.h>
 
 #include <eyestream/eye.hpp>
+#include <eyestream/readers.hpp>
 #include <mutex>
 #include <sstream>
 
@@ -189,6 +190,32 @@ std::string eye_doc() {
   return doc.str();
 }
 
+std::map<std::string, std::string> named_settings(const py::kwargs& settings) {
+  std::map<std::string, std::string> named;
+  for (const auto& [k, v] : settings) named[k.cast<std::string>()] = setting_text(v);
+  return named;
+}
+
+// The frames of an input, one (frame, t, index) at a time; the GIL is
+// released while a frame is read.
+struct PyFrames {
+  explicit PyFrames(eyestream::FrameReader r) : reader(std::move(r)) {}
+  eyestream::FrameReader reader;
+  std::mutex busy;
+
+  py::tuple next() {
+    eyestream::InputFrame f;
+    bool got = false;
+    {
+      py::gil_scoped_release unlocked;
+      const std::lock_guard<std::mutex> one_at_a_time(busy);
+      got = reader.next(f);
+    }
+    if (!got) throw py::stop_iteration();
+    return py::make_tuple(to_numpy(f.rgb_cd_m2), f.time_s, f.index);
+  }
+};
+
 }  // namespace
 
 PYBIND11_MODULE(eyestream, m) {
@@ -206,9 +233,7 @@ PYBIND11_MODULE(eyestream, m) {
 
   py::class_<PyEye>(m, "Eye", eye_doc().c_str())
       .def(py::init([](int width, int height, double fps, const py::kwargs& settings) {
-             std::map<std::string, std::string> named;
-             for (const auto& [k, v] : settings) named[k.cast<std::string>()] = setting_text(v);
-             return new PyEye(Eye(width, height, fps, named));
+             return new PyEye(Eye(width, height, fps, named_settings(settings)));
            }),
            py::arg("width"), py::arg("height"), py::arg("fps"))
       .def("process", &PyEye::process, py::arg("frame"), py::arg("gaze") = py::none(),
@@ -229,8 +254,7 @@ PYBIND11_MODULE(eyestream, m) {
   m.def(
       "psf",
       [](int width, int height, double adaptation, const py::kwargs& settings) {
-        std::map<std::string, std::string> named;
-        for (const auto& [k, v] : settings) named[k.cast<std::string>()] = setting_text(v);
+        const std::map<std::string, std::string> named = named_settings(settings);
         eyestream::Psf p;
         {
           py::gil_scoped_release unlocked;
@@ -248,6 +272,43 @@ PYBIND11_MODULE(eyestream, m) {
       "adapted to `adaptation` cd/m^2; settings as for Eye (viewer_age=70, psf_model=\"cie\", ...). kernel:\n"
       "float32 (2 height - 1) x (2 width - 1) x 3 (R, G, B), centred on (height - 1, width - 1); each\n"
       "channel sums to the share of a pixel's light spread within the frame's reach.");
+
+  py::class_<PyFrames>(m, "Frames",
+                       "Frames(path, **settings): the frames of an input as `eyestream run -i` reads it (EXR\n"
+                       "sequence, HDR video, .hdr/.pfm/.tif stills), iterated as (frame, t, index): frame float32\n"
+                       "HxWx3 linear Rec.709 in cd/m^2, t seconds from the first frame. Settings are the input\n"
+                       "options (fps, scale, layer, video_transfer, video_peak, skip_missing, ...).")
+      .def(py::init([](const std::string& path, const py::kwargs& settings) {
+             return new PyFrames(eyestream::FrameReader(path, named_settings(settings)));
+           }),
+           py::arg("path"))
+      .def("__iter__", [](PyFrames& f) -> PyFrames& { return f; })
+      .def("__next__", &PyFrames::next)
+      .def_property_readonly("width", [](const PyFrames& f) { return f.reader.width(); })
+      .def_property_readonly("height", [](const PyFrames& f) { return f.reader.height(); })
+      .def_property_readonly("fps", [](const PyFrames& f) { return f.reader.fps(); })
+      .def_property_readonly("frame_count", [](const PyFrames& f) { return f.reader.frame_count(); })
+      .def_property_readonly("description", [](const PyFrames& f) { return f.reader.description(); });
+
+  m.def(
+      "read_gaze",
+      [](const std::string& path, int width, int height, double fps, const py::kwargs& settings) {
+        const std::vector<eyestream::Gaze> gaze = eyestream::read_gaze(path, width, height, fps, named_settings(settings));
+        py::array_t<double> out(std::vector<py::ssize_t>{py::ssize_t(gaze.size()), 6});
+        auto a = out.mutable_unchecked<2>();
+        for (size_t i = 0; i < gaze.size(); ++i) {
+          const eyestream::Gaze& g = gaze[i];
+          const double row[6] = {g.t_s, g.x, g.y, g.closed ? 1.0 : 0.0, g.lost ? 1.0 : 0.0, g.pupil_mm};
+          for (int c = 0; c < 6; ++c) a(py::ssize_t(i), c) = row[c];
+        }
+        return out;
+      },
+      py::arg("path"), py::arg("width"), py::arg("height"), py::arg("fps"),
+      "read_gaze(path, width, height, fps, **settings) -> float64 N x 6 (t, x, y, closed, lost, pupil_mm)\n\n"
+      "A gaze log or eye-tracker export as `eyestream run -g` reads it for a width x height stream at fps\n"
+      "frames/s: seconds from the first frame, frame pixels, pupil_mm NaN when not recorded. Settings are the\n"
+      "gaze options (gaze_format, gaze_units, gaze_sync, gaze_recording, gaze_pupil_scale, ...). Rows of a\n"
+      "frame's interval are what Eye.process takes as its gaze.");
 
   m.def(
       "parameters",

@@ -28,6 +28,7 @@
 #include "pipeline/run/preview_renderer.hpp"
 #include "pipeline/run/progress.hpp"
 #include "pipeline/run/report_writer.hpp"
+#include "pipeline/run/run_inputs.hpp"
 #include "pipeline/eye/target_region.hpp"
 
 namespace eyestream::pipeline {
@@ -50,36 +51,6 @@ std::string RunSummary::one_line() const {
 }
 
 namespace {
-
-io::GazeImportOptions gaze_import_options(const Settings& s, const io::SourceInfo& info) {
-  io::GazeImportOptions o;
-  const std::string& f = s.gaze_format;
-  o.format = f == "native"       ? io::GazeFormat::kNative
-             : f == "pupil-core" ? io::GazeFormat::kPupilCore
-             : f == "neon"       ? io::GazeFormat::kNeon
-             : f == "neon-surface" ? io::GazeFormat::kNeonSurface
-             : f == "tobii"      ? io::GazeFormat::kTobii
-             : f == "eyelink"    ? io::GazeFormat::kEyeLink
-                                 : io::GazeFormat::kAuto;
-  o.units = s.gaze_units == "norm" ? io::GazeUnits::kNormalised : io::GazeUnits::kPixels;
-  o.frame_width = info.width;
-  o.frame_height = info.height;
-  o.source_width = s.gaze_source_width;
-  o.source_height = s.gaze_source_height;
-  o.min_confidence = s.gaze_confidence;
-  o.offset_s = s.gaze_offset_s;
-  o.sync_clock = s.gaze_sync_s;
-  o.sync_message = s.gaze_sync_message;
-  o.recording = s.gaze_recording;
-  o.blinks = s.gaze_blinks;
-  o.eye = s.gaze_eye;
-  o.pupil_scale_mm = s.gaze_pupil_scale_mm;
-  return o;
-}
-
-std::unique_ptr<io::FrameSource> open_input(const Settings& s) {
-  return io::open_source(s.input, io::SourceOptions{s.exr, s.video_input, s.frame_size});
-}
 
 // Decoding and encoding on threads of their own beside the eye, unless the
 // run is held to one thread. The frames and their order do not change.

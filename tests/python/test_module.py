@@ -114,6 +114,36 @@ class MatchesTheCommandLine(unittest.TestCase):
                 self.assertTrue(np.array_equal(eye.code, expected), f"frame {n}")
             self.assertTrue(any(r[3] for r in log), "the log has a blink")
 
+    def test_the_readers_feed_an_eye_the_frames_and_gaze_the_command_line_reads(self):
+        # A built-in scene's EXR frames and gaze log, read by eyestream.Frames
+        # and eyestream.read_gaze, through an Eye: the command line's PNGs.
+        with tempfile.TemporaryDirectory() as d:
+            subprocess.run([os.environ["EYESTREAM"], "sample", "night-drive", "-o", os.path.join(d, "nd"),
+                            "--width", "64", "--height", "36", "--duration", "0.3"], check=True, capture_output=True)
+            frames_in, gaze_in = os.path.join(d, "nd", "frames"), os.path.join(d, "nd", "gaze.csv")
+            subprocess.run([os.environ["EYESTREAM"], "run", "-i", frames_in, "-g", gaze_in, "--quality", "fast",
+                            "-o", os.path.join(d, "out", "%05d.png")], check=True, capture_output=True)
+            frames = eyestream.Frames(frames_in)
+            self.assertEqual((frames.width, frames.height, frames.frame_count), (64, 36, 9))
+            gaze = eyestream.read_gaze(gaze_in, frames.width, frames.height, frames.fps)
+            self.assertEqual(gaze.shape[1], 6)
+            eye = eyestream.Eye(frames.width, frames.height, frames.fps, quality="fast")
+            count = 0
+            for frame, t, n in frames:
+                self.assertAlmostEqual(t, n / frames.fps, places=9)
+                mine = gaze[(gaze[:, 0] >= n / frames.fps) & (gaze[:, 0] < (n + 1) / frames.fps)]
+                # The command line holds the log's first sample back to frame 0.
+                if n == 0:
+                    mine = np.vstack([gaze[:1], mine[mine[:, 0] > gaze[0, 0]]]) if gaze[0, 0] > 0 else mine
+                eye.process(frame, mine)
+                expected = read_png_rgb8(os.path.join(d, "out", f"{n:05d}.png"))
+                self.assertTrue(np.array_equal(eye.code, expected), f"frame {n}")
+                count += 1
+            self.assertEqual(count, 9)
+            with self.assertRaises(eyestream.Error) as e:
+                eyestream.Frames(os.path.join(d, "missing", "%05d.exr"))
+            self.assertEqual(e.exception.args[1], 3)
+
 
 class Frames(unittest.TestCase):
     def test_views_and_other_dtypes_give_the_same_frames(self):
