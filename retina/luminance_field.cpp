@@ -3,25 +3,55 @@
 #include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
+#include <vector>
 
 #include "retina/luminance.hpp"
 
 namespace eyestream::retina {
 
-LuminanceField::LuminanceField(const cv::Mat& rgb, double floor_cd_m2, const cv::Mat& weights) {
-  const cv::Mat l = floored_luminance(rgb, floor_cd_m2);
-  cv::integral(l, integral_, CV_64F);
-  const int cols = integral_.cols - 1, rows = integral_.rows - 1;
+namespace {
+
+// Sum over rows [y0, y1) of sum_x l(y, x) w(y, x) for x in [x0, x1) (w = 1
+// when empty), each row in double, rows added in order: the same value
+// whatever the thread count.
+double region_sum(const cv::Mat& l, const cv::Mat& w, int x0, int x1, int y0, int y1) {
+  std::vector<double> rows(size_t(std::max(0, y1 - y0)), 0.0);
+  const auto sum_rows = [&](const cv::Range& r) {
+    for (int y = r.start; y < r.end; ++y) {
+      const float* a = l.ptr<float>(y);
+      const float* b = w.empty() ? nullptr : w.ptr<float>(y);
+      double s = 0.0;
+      if (b)
+        for (int x = x0; x < x1; ++x) s += double(a[x]) * double(b[x]);
+      else
+        for (int x = x0; x < x1; ++x) s += a[x];
+      rows[size_t(y - y0)] = s;
+    }
+  };
+  if (double(x1 - x0) * double(y1 - y0) > 1e5)
+    cv::parallel_for_(cv::Range(y0, y1), sum_rows);
+  else
+    sum_rows(cv::Range(y0, y1));
+  double total = 0.0;
+  for (double s : rows) total += s;
+  return total;
+}
+
+}  // namespace
+
+LuminanceField::LuminanceField(const cv::Mat& rgb, double floor_cd_m2, const cv::Mat& weights)
+    : luminance_(floored_luminance(rgb, floor_cd_m2)) {
+  const int cols = luminance_.cols, rows = luminance_.rows;
   if (weights.empty()) {
-    mean_ = integral_.at<double>(rows, cols) / (double(cols) * double(rows));
+    mean_ = region_sum(luminance_, cv::Mat(), 0, cols, 0, rows) / (double(cols) * double(rows));
   } else {
-    CV_Assert(weights.type() == CV_32F && weights.size() == l.size());
-    mean_ = l.dot(weights) / cv::sum(weights)[0];
+    CV_Assert(weights.type() == CV_32F && weights.size() == luminance_.size());
+    mean_ = region_sum(luminance_, weights, 0, cols, 0, rows) / region_sum(weights, cv::Mat(), 0, cols, 0, rows);
   }
 }
 
 double LuminanceField::patch_log_mean(double x, double y, double half_x, double half_y, double surround_cd_m2) const {
-  const int cols = integral_.cols - 1, rows = integral_.rows - 1;
+  const int cols = luminance_.cols, rows = luminance_.rows;
   half_x = std::max(half_x, 0.5);
   half_y = std::max(half_y, 0.5);
   // The patch in whole pixels (at least one), then its part inside the frame.
@@ -31,8 +61,7 @@ double LuminanceField::patch_log_mean(double x, double y, double half_x, double 
   const int y0 = int(std::clamp<long>(py0, 0, rows)), y1 = int(std::clamp<long>(py1, 0, rows));
   const double total = double(px1 - px0) * double(py1 - py0);
   const double inside = double(x1 - x0) * double(y1 - y0);
-  const double sum = integral_.at<double>(y1, x1) - integral_.at<double>(y0, x1) - integral_.at<double>(y1, x0) +
-                     integral_.at<double>(y0, x0);
+  const double sum = region_sum(luminance_, cv::Mat(), x0, x1, y0, y1);
   return std::log10((sum + (total - inside) * surround_cd_m2) / total);
 }
 

@@ -1,7 +1,8 @@
-// Mean luminance over square patches of a frame in O(1) per query: the
-// adaptation target around the gaze, the log of the average luminance of a
-// small patch (Jacobs et al. 2015, sec. 2.1), and the
-// field luminance the pupil responds to.
+// Mean luminance over patches of a frame: the adaptation target around the
+// gaze, the log of the average luminance of a small patch (Jacobs et al.
+// 2015, sec. 2.1), and the field luminance the pupil responds to. A frame
+// is asked for one to a few patches, so each is summed directly (in double,
+// row by row) rather than through an integral image of the whole frame.
 #pragma once
 
 #include <opencv2/core.hpp>
@@ -31,8 +32,11 @@ class LuminanceField {
   // Mean luminance of the whole frame (cd/m^2), weighted as constructed.
   double frame_mean() const { return mean_; }
 
+  // The floored luminance itself (CV_32F, frame-sized), for others to read.
+  const cv::Mat& luminance() const { return luminance_; }
+
  private:
-  cv::Mat integral_;  // CV_64F, (rows+1) x (cols+1)
+  cv::Mat luminance_;  // CV_32F
   double mean_ = 0.0;
 };
 

@@ -103,7 +103,7 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
   if (last.eye_closed)
     seen = cv::Mat::zeros(frame.rgb.size(), CV_32FC3);
   else
-    mesopic_->render(retinal, curve, *adaptation_, frame.time_s, seen, &active, last.x, last.y);
+    mesopic_->render(retinal, curve, *adaptation_, frame.time_s, seen, &active, last.x, last.y, field.luminance());
   times.mesopic_ms = lap_ms(clock);
   active.afterimages = retina_->composite(seen, last.x, last.y, out.linear);
   times.afterimage_ms = lap_ms(clock);

@@ -43,7 +43,8 @@ cv::Mat MesopicStage::level_of(const cv::Mat& floored, double adaptation_log, do
 }
 
 void MesopicStage::render(const cv::Mat& rgb, const retina::ToneCurve& curve, double adaptation_log, double time_s,
-                          cv::Mat& out, StageActivity* activity, double gaze_x, double gaze_y) const {
+                          cv::Mat& out, StageActivity* activity, double gaze_x, double gaze_y,
+                          const cv::Mat& given_floored) const {
   retina::MesopicColour colour;
   const bool tinted = plan_.mesopic.enabled && retina::mesopic_colour(adaptation_log, plan_.mesopic.colour, colour);
   const bool local = tinted && plan_.mesopic.colour.local_sigma_deg > 0.0;
@@ -52,7 +53,9 @@ void MesopicStage::render(const cv::Mat& rgb, const retina::ToneCurve& curve, do
   const bool blur = plan_.mesopic.enabled && acuity_ &&
                     (!plan_.skip || retina::mesopic_rho(adaptation_log, plan_.mesopic.colour) < acuity_->rho_all_kept());
   // The frame's floored luminance, once for both effects that read it.
-  const cv::Mat floored = local || blur ? retina::floored_luminance(rgb, plan_.dark_cd_m2) : cv::Mat();
+  const cv::Mat floored = !(local || blur)        ? cv::Mat()
+                          : !given_floored.empty() ? given_floored
+                                                   : retina::floored_luminance(rgb, plan_.dark_cd_m2);
   cv::Mat rho;
   if (local) {
     retina::local_rho(floored, adaptation_log, plan_.mesopic.colour.local_sigma_deg * plan_.pixels_per_degree,

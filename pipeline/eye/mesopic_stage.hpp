@@ -33,8 +33,11 @@ class MesopicStage {
   // `activity` (may be null) receives which of the two effects ran.
   // The acuity noise lives on the retina: its pattern moves with the gaze
   // at (gaze_x, gaze_y).
+  // `floored` (optional): rgb's luminance floored at the plan's dark
+  // level, when the caller has it (retina::LuminanceField::luminance()).
   void render(const cv::Mat& rgb, const retina::ToneCurve& curve, double adaptation_log, double time_s, cv::Mat& out,
-              StageActivity* activity = nullptr, double gaze_x = 0.0, double gaze_y = 0.0) const;
+              StageActivity* activity = nullptr, double gaze_x = 0.0, double gaze_y = 0.0,
+              const cv::Mat& floored = cv::Mat()) const;
 
   // rho + g X of the acuity loss for a frame (for reports and tests).
   cv::Mat acuity_level(const cv::Mat& rgb, double adaptation_log, double time_s, double gaze_x = 0.0,

@@ -100,8 +100,10 @@ void RetinaStage::advance(const cv::Mat& rgb, const std::vector<GazeSegment>& fr
   // the gaze are carried there.
   const FrameProjection& p = *plan_.projection;
   const cv::Scalar surround = cv::Scalar::all(surround_cd_m2);
-  const cv::Mat cones = retina::to_cone_stimulus(rgb, plan_.retina.double_precision ? CV_64F : CV_32F);
-  const cv::Mat lms = p.identity() ? grid_.reduce(cones) : reduce_frame(cones);
+  // Reduced first, then carried to cone space: the transform is linear, so
+  // the area means commute with it, and it runs on the reduced pixels only.
+  const cv::Mat reduced = p.identity() ? grid_.reduce(rgb) : reduce_frame(rgb);
+  const cv::Mat lms = retina::to_cone_stimulus(reduced, plan_.retina.double_precision ? CV_64F : CV_32F);
   std::vector<GazeSegment> segments = frame_segments;
   for (GazeSegment& s : segments) {
     const cv::Point2d at = p.to_plane({s.x, s.y});
@@ -141,11 +143,11 @@ cv::Size RetinaStage::reduced_frame_size(cv::Size frame) const {
   return {std::max(1, int(std::lround(frame.width * k))), std::max(1, int(std::lround(frame.height * k)))};
 }
 
-cv::Mat RetinaStage::reduce_frame(const cv::Mat& cones) const {
-  const cv::Size size = reduced_frame_size(cones.size());
-  if (size == cones.size()) return cones;
+cv::Mat RetinaStage::reduce_frame(const cv::Mat& frame) const {
+  const cv::Size size = reduced_frame_size(frame.size());
+  if (size == frame.size()) return frame;
   cv::Mat out;
-  cv::resize(cones, out, size, 0, 0, cv::INTER_AREA);
+  cv::resize(frame, out, size, 0, 0, cv::INTER_AREA);
   return out;
 }
 

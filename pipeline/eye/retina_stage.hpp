@@ -66,7 +66,7 @@ class RetinaStage {
   // kRestTolerance (the afterimage maps of the whole grid).
   bool whole_grid_rests() const;
   cv::Size reduced_frame_size(cv::Size frame) const;
-  cv::Mat reduce_frame(const cv::Mat& cones) const;
+  cv::Mat reduce_frame(const cv::Mat& frame) const;
   // The grid's stimulus for the gaze at plane point (plane_x, plane_y).
   cv::Mat sample(const cv::Mat& reduced, double plane_x, double plane_y, const cv::Scalar& surround) const;
 
