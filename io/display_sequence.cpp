@@ -41,9 +41,9 @@ cv::Mat read_code_image(const std::string& path) {
 
 }  // namespace
 
-DisplaySequence::DisplaySequence(const std::string& path) : path_(path) {
+DisplaySequence::DisplaySequence(const std::string& path, const std::string& layer) : path_(path), layer_(layer) {
   if (is_image_path(path)) {
-    files_ = list_sequence(path, kImageExtensions, false);
+    files_ = list_sequence(path, kImageExtensions, false, "compare pairs every frame: give both sequences whole");
     const bool exr = is_exr(files_.front().path);
     kind_ = exr ? Kind::kLinear : Kind::kCode;
     for (const SequenceEntry& e : files_) {
@@ -91,7 +91,7 @@ std::optional<DisplayImage> DisplaySequence::next() {
   }
   if (position_ >= files_.size()) return std::nullopt;
   const SequenceEntry& entry = files_[position_++];
-  if (kind_ == Kind::kLinear) return DisplayImage{read_exr(entry.path, 400'000'000).rgb, entry.path, entry.number};
+  if (kind_ == Kind::kLinear) return DisplayImage{read_exr(entry.path, 400'000'000, layer_).rgb, entry.path, entry.number};
   return DisplayImage{read_code_image(entry.path), entry.path, entry.number};
 }
 

@@ -27,7 +27,8 @@ class DisplaySequence {
   // A path ending in .png/.exr/.tif/.tiff (or a folder of them) is an
   // image sequence; anything else is opened as a video. InputError naming
   // the path when it cannot be read.
-  explicit DisplaySequence(const std::string& path);
+  // `layer`: the layer of layered EXRs (as run's --layer; "" the beauty pass).
+  explicit DisplaySequence(const std::string& path, const std::string& layer = "");
   // PNG, TIFF and SDR video frames hold display code values (0..1, decoded
   // to light with gamma 2.2, eyestream's own encoding inverted); EXR frames
   // hold display-linear values. A video tagged PQ or HLG is decoded to
@@ -44,7 +45,7 @@ class DisplaySequence {
   std::optional<DisplayImage> next();
 
  private:
-  std::string path_;
+  std::string path_, layer_;
   std::vector<SequenceEntry> files_;
   std::unique_ptr<VideoReader> video_;
   std::unique_ptr<VideoSource> hdr_;  // a PQ or HLG video, decoded to light

@@ -84,7 +84,7 @@ std::string choose_layer(const std::string& path, const Imf::ChannelList& ch, co
     throw InputError(path + ": several beauty passes (" + names + "); choose one with --layer");
   }
   if (layers.size() == 1) return layers.front();
-  if (layers.empty()) throw InputError(path + ": no R,G,B or Y channels");
+  if (layers.empty()) throw InputError(path + ": no colour channels (R, G, B, or Y alone; X, Y, Z is a vector pass)");
   throw InputError(path + ": several colour layers (" + list + ") and no beauty pass; choose one with --layer");
 }
 

@@ -49,6 +49,11 @@ cv::Mat read_float_tiff(const std::string& path) {
   TIFFGetFieldDefaulted(tif.get(), TIFFTAG_SAMPLESPERPIXEL, &channels);
   TIFFGetFieldDefaulted(tif.get(), TIFFTAG_SAMPLEFORMAT, &format);
   TIFFGetFieldDefaulted(tif.get(), TIFFTAG_PLANARCONFIG, &planar);
+  std::uint16_t photometric = 0;
+  TIFFGetField(tif.get(), TIFFTAG_PHOTOMETRIC, &photometric);
+  if (photometric == PHOTOMETRIC_LOGLUV || photometric == PHOTOMETRIC_LOGL)
+    throw InputError(path + ": a LogLuv TIFF (log-encoded CIE XYZ); eyestream reads 16- or 32-bit floating-point "
+                            "RGB or grey TIFFs: convert it to float RGB first");
   if (format != SAMPLEFORMAT_IEEEFP || (bits != 32 && bits != 16))
     throw InputError(path + ": holds " + std::to_string(bits) + "-bit " +
                      (format == SAMPLEFORMAT_IEEEFP ? "floating-point" : "integer") +
@@ -84,7 +89,7 @@ cv::Mat read_float_tiff(const std::string& path) {
                                          buffer.data(), unit_size);
         if (got < 0)
           throw InputError(path + ": cannot decode the " + (tiled ? "tile" : "strip") + " at row " +
-                           std::to_string(y0));
+                           std::to_string(y0) + (tiled ? ", column " + std::to_string(x0) : std::string()));
         const std::uint32_t rows = std::min(unit_h, height - y0), cols = std::min(unit_w, width - x0);
         if (size_t(got) < size_t((rows - 1) * unit_w + cols) * size_t(per_pixel) * bytes)
           throw InputError(path + ": a " + (tiled ? "tile" : "strip") + " at row " + std::to_string(y0) + " is short");

@@ -43,7 +43,7 @@ bool has_extension(const fs::path& p, const std::vector<std::string>& exts) {
   return std::find(exts.begin(), exts.end(), e) != exts.end();
 }
 
-std::vector<SequenceEntry> list_pattern(const std::string& pattern, bool skip_missing) {
+std::vector<SequenceEntry> list_pattern(const std::string& pattern, bool skip_missing, const std::string& gap_hint) {
   fs::path p(pattern);
   fs::path dir = p.parent_path().empty() ? fs::path(".") : p.parent_path();
   PatternParts parts;
@@ -68,7 +68,7 @@ std::vector<SequenceEntry> list_pattern(const std::string& pattern, bool skip_mi
   for (size_t i = 0; i < numbers.size(); ++i) {
     if (i > 0 && numbers[i] != numbers[i - 1] + 1 && !skip_missing)
       throw InputError(format_pattern(pattern, numbers[i - 1] + 1) +
-                       ": missing frame in the sequence (use --skip-missing to go on without it)");
+                       ": missing frame in the sequence (" + gap_hint + ")");
     out.push_back({format_pattern(pattern, numbers[i]), numbers[i]});
   }
   return out;
@@ -92,8 +92,8 @@ std::string format_pattern(const std::string& pattern, std::int64_t number) {
 }
 
 std::vector<SequenceEntry> list_sequence(const std::string& input, const std::vector<std::string>& extensions,
-                                         bool skip_missing) {
-  if (is_printf_pattern(input)) return list_pattern(input, skip_missing);
+                                         bool skip_missing, const std::string& gap_hint) {
+  if (is_printf_pattern(input)) return list_pattern(input, skip_missing, gap_hint);
   std::error_code ec;
   if (fs::is_directory(input, ec)) {
     std::vector<std::string> names;
@@ -102,7 +102,8 @@ std::vector<SequenceEntry> list_sequence(const std::string& input, const std::ve
     if (names.empty()) throw InputError(input + ": folder holds no frame files");
     std::sort(names.begin(), names.end());
     // Numbered files (frame_00010.exr ...) keep their numbers, as a pattern
-    // would give them; otherwise the position by name.
+    // would give them, when the numbers run on without a gap or a repeat;
+    // otherwise (every tenth frame, mixed names) the position by name.
     std::vector<SequenceEntry> out;
     for (size_t i = 0; i < names.size(); ++i) {
       const std::string stem = fs::path(names[i]).stem().string();
@@ -115,16 +116,11 @@ std::vector<SequenceEntry> list_sequence(const std::string& input, const std::ve
       out.push_back({names[i], std::stoll(stem.substr(digits))});
     }
     std::sort(out.begin(), out.end(), [](const SequenceEntry& a, const SequenceEntry& b) { return a.number < b.number; });
-    for (size_t i = 1; i < out.size(); ++i) {
-      if (out[i].number == out[i - 1].number) {  // two names, one number: positions
+    for (size_t i = 1; i < out.size(); ++i)
+      if (out[i].number != out[i - 1].number + 1) {
         out.clear();
         break;
       }
-      if (out[i].number != out[i - 1].number + 1 && !skip_missing)
-        throw InputError(input + ": no frame numbered " + std::to_string(out[i - 1].number + 1) +
-                         " between " + out[i - 1].path + " and " + out[i].path +
-                         " (use --skip-missing to go on without it)");
-    }
     if (!out.empty()) return out;
     for (size_t i = 0; i < names.size(); ++i) out.push_back({names[i], std::int64_t(i)});
     return out;

@@ -100,6 +100,13 @@ std::vector<GazeSample> parse_eyelink(const std::string& text, const std::string
     s.t_s = t * 1e-3;
     // Binocular lines: "time xl yl pl xr yr pr"; the chosen eye, or the
     // mean of the two (the one seen when the other is missing).
+    // A position is a number or "." (missing); anything else is a malformed line.
+    for (size_t i : {size_t(1), size_t(2), size_t(4), size_t(5)}) {
+      if (i >= w.size() || (i >= 4 && !(binocular || (!blocks && w.size() >= 7)))) continue;
+      double v;
+      if (w[i] != "." && !parse_number(w[i], v))
+        throw InputError(where + ": sample position '" + w[i] + "' is neither a number nor '.'");
+    }
     double xl, yl, xr, yr;
     const bool left = w.size() >= 3 && parse_number(w[1], xl) && parse_number(w[2], yl);
     // (An excerpt without START says nothing: a line of seven or more

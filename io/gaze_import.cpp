@@ -82,13 +82,23 @@ std::vector<GazeSample> parse_gaze(const std::string& raw, const std::string& na
   GazeRead local;
   GazeRead& info = read ? *read : local;
   info.format = format;
+  if (format != GazeFormat::kPupilCore && format != GazeFormat::kNeon && format != GazeFormat::kNeonSurface &&
+      o.blinks != "auto" && o.blinks != "none")
+    throw UsageError("--gaze-blinks " + o.blinks + ": blinks files go with Pupil Core and Neon exports; " + name +
+                     " is not one");
+  if (!o.sync_message.empty() && format != GazeFormat::kEyeLink)
+    throw UsageError("--gaze-sync-message: only EyeLink ASC files carry messages (use --gaze-sync)");
+  if (!o.sync_message.empty() && o.sync_clock)
+    throw UsageError("--gaze-sync and --gaze-sync-message both set time 0: give one");
+  if (!o.recording.empty() && format != GazeFormat::kNeon && format != GazeFormat::kNeonSurface &&
+      format != GazeFormat::kTobii)
+    throw UsageError("--gaze-recording " + o.recording + ": only Neon and Tobii exports hold several recordings; " +
+                     name + " does not");
   if (format == GazeFormat::kNative) {
     std::vector<GazeSample> s = parse_gaze_csv(text, name, o.units, o.frame_width, o.frame_height);
     for (GazeSample& g : s) g.t_s += o.offset_s;
     return s;
   }
-  if (!o.sync_message.empty() && format != GazeFormat::kEyeLink)
-    throw UsageError("--gaze-sync-message: only EyeLink ASC files carry messages (use --gaze-sync)");
   std::optional<double> message_time;
   GazeNotes& notes = info.notes;
   std::vector<GazeSample> s = format == GazeFormat::kPupilCore     ? parse_pupil_core(text, name, o, notes)
@@ -99,9 +109,6 @@ std::vector<GazeSample> parse_gaze(const std::string& raw, const std::string& na
   if (s.empty()) throw InputError(name + ": no gaze samples");
   const bool pupil_labs =
       format == GazeFormat::kPupilCore || format == GazeFormat::kNeon || format == GazeFormat::kNeonSurface;
-  if (!pupil_labs && o.blinks != "auto" && o.blinks != "none")
-    throw UsageError("--gaze-blinks " + o.blinks + ": blinks files go with Pupil Core and Neon exports; " + name +
-                     " is not one");
   if (pupil_labs && !o.blinks_text.empty()) {
     const size_t n = apply_blinks(plain_text(o.blinks_text), o.blinks_name, o.recording, s);
     notes.push_back(std::to_string(n) + " blinks from " + o.blinks_name);
@@ -139,8 +146,9 @@ std::vector<GazeSample> read_gaze(const std::string& path, const GazeImportOptio
   // Pupil Player and Neon export blinks beside the gaze; or a named file.
   if (o.blinks_text.empty() && o.blinks != "none") {
     const bool beside = o.blinks == "auto";
-    const std::filesystem::path blinks =
+    std::filesystem::path blinks =
         beside ? std::filesystem::path(path).parent_path() / "blinks.csv" : std::filesystem::path(o.blinks);
+    if (!beside && std::filesystem::is_directory(blinks)) blinks /= "blinks.csv";  // an export's folder
     const std::optional<std::string> b =
         beside && std::filesystem::path(path).filename() == "blinks.csv" ? std::nullopt : read_text(blinks);
     if (!b && !beside) throw InputError(o.blinks + ": cannot open the blinks file (--gaze-blinks)");

@@ -62,14 +62,21 @@ std::vector<GazeSample> parse_tobii(const std::string& text, const std::string& 
   double source_w = o.source_width, source_h = o.source_height;
   const int rw = t.column("Recording resolution width", true), rh = t.column("Recording resolution height", true);
   if (rw >= 0 && rh >= 0 && (source_w <= 0 || source_h <= 0))
-    for (const std::vector<std::string>& row : t.rows) {
+    for (size_t r = 0; r < t.rows.size(); ++r) {
+      const std::vector<std::string>& row = t.rows[r];
+      if (rw >= int(row.size()) || rh >= int(row.size()) || (row[size_t(rw)].empty() && row[size_t(rh)].empty()))
+        continue;  // a row without them (an event row)
       double w = 0, h = 0;
-      if (rw < int(row.size()) && rh < int(row.size()) && parse_number(row[size_t(rw)], w, true) &&
-          parse_number(row[size_t(rh)], h, true) && w > 0 && h > 0) {
+      if (!parse_number(row[size_t(rw)], w, true) || !parse_number(row[size_t(rh)], h, true) || !(w > 0) || !(h > 0))
+        throw InputError(name + ":" + std::to_string(t.line_numbers[r]) + ": Recording resolution '" +
+                         row[size_t(rw)] + "x" + row[size_t(rh)] + "' is not a screen size in pixels");
+      {
+        const bool both = source_w <= 0 && source_h <= 0;
         if (source_w <= 0) source_w = w;
         if (source_h <= 0) source_h = h;
-        char note[128];
-        std::snprintf(note, sizeof note, "the screen is %gx%g px, from Recording resolution", source_w, source_h);
+        char note[160];
+        std::snprintf(note, sizeof note, "the screen is %gx%g px, %s from Recording resolution", source_w, source_h,
+                      both ? "both" : "the side not given");
         notes.push_back(note);
         break;
       }

@@ -63,6 +63,48 @@ LightMetadata light_metadata(const std::vector<std::string>& inputs) {
   return m;
 }
 
+// A chunk's video packets in decode order, timed in `time_base`. Matroska
+// stores presentation times only, so its demuxer leaves most decode times
+// unset; they are made again here as a muxer needs them: the presentation
+// times in order, moved back by the largest reordering (so each packet is
+// decoded no later than it is shown, and the times rise).
+std::vector<AVPacket*> chunk_packets(InputFile& in, AVRational time_base) {
+  std::vector<AVPacket*> packets;
+  const AVRational src = in.format->streams[in.stream]->time_base;
+  bool missing = false;
+  for (AVPacket* p = av_packet_alloc(); p; p = av_packet_alloc()) {
+    if (av_read_frame(in.format, p) < 0) {
+      av_packet_free(&p);
+      break;
+    }
+    if (p->stream_index != in.stream) {
+      av_packet_free(&p);
+      continue;
+    }
+    av_packet_rescale_ts(p, src, time_base);
+    missing = missing || p->dts == AV_NOPTS_VALUE;
+    packets.push_back(p);
+  }
+  if (!missing) return packets;
+  std::vector<std::int64_t> shown;
+  for (const AVPacket* p : packets)
+    if (p->pts != AV_NOPTS_VALUE) shown.push_back(p->pts);
+  if (shown.size() != packets.size()) return packets;  // no way to time them: the muxer will say so
+  std::sort(shown.begin(), shown.end());
+  std::int64_t delay = 0;
+  for (size_t i = 0; i < packets.size(); ++i) delay = std::max(delay, shown[i] - packets[i]->pts);
+  for (size_t i = 0; i < packets.size(); ++i) packets[i]->dts = shown[i] - delay;
+  return packets;
+}
+
+// The earliest presentation time of a chunk's packets.
+std::int64_t chunk_start(const std::vector<AVPacket*>& packets) {
+  std::int64_t start = AV_NOPTS_VALUE;
+  for (const AVPacket* p : packets)
+    if (p->pts != AV_NOPTS_VALUE && (start == AV_NOPTS_VALUE || p->pts < start)) start = p->pts;
+  return start;
+}
+
 void add_side_data(AVStream* stream, AVPacketSideDataType type, const void* data, size_t size) {
   uint8_t* copy = static_cast<uint8_t*>(av_malloc(size));
   if (!copy) return;
@@ -92,9 +134,7 @@ void concat_videos(const std::vector<std::string>& inputs, const std::string& ou
   } closer{out};
   out->flags |= AVFMT_FLAG_BITEXACT;
   AVStream* stream = avformat_new_stream(out, nullptr);
-  std::unique_ptr<AVPacket, void (*)(AVPacket*)> owned(av_packet_alloc(), [](AVPacket* p) { av_packet_free(&p); });
-  AVPacket* packet = owned.get();
-  std::int64_t last_dts = AV_NOPTS_VALUE;
+  std::int64_t last_dts = AV_NOPTS_VALUE, last_end = AV_NOPTS_VALUE;
   const AVCodecParameters* first = nullptr;
   std::unique_ptr<InputFile> first_input;
   for (size_t k = 0; k < inputs.size(); ++k) {
@@ -122,19 +162,41 @@ void concat_videos(const std::vector<std::string>& inputs, const std::string& ou
     } else if (src->codecpar->codec_id != first->codec_id || src->codecpar->width != first->width ||
                src->codecpar->height != first->height) {
       throw InputError(inputs[k] + ": another codec or frame size than " + inputs[0]);
+    } else if (src->codecpar->format != first->format || src->codecpar->color_trc != first->color_trc ||
+               src->codecpar->color_primaries != first->color_primaries ||
+               src->codecpar->color_space != first->color_space) {
+      throw InputError(inputs[k] + ": another pixel format or colour (transfer, primaries, matrix) than " +
+                       inputs[0] + ": the chunks were made with other settings");
     }
-    while (av_read_frame(in->format, packet) >= 0) {
-      if (packet->stream_index != in->stream) {
-        av_packet_unref(packet);
-        continue;
+    std::vector<AVPacket*> chunk = chunk_packets(*in, stream->time_base);
+    struct Freer {
+      std::vector<AVPacket*>& p;
+      ~Freer() {
+        for (AVPacket*& q : p) av_packet_free(&q);
       }
-      av_packet_rescale_ts(packet, src->time_base, stream->time_base);
-      if (last_dts != AV_NOPTS_VALUE && packet->dts != AV_NOPTS_VALUE && packet->dts <= last_dts)
+    } freer{chunk};
+    if (chunk.empty()) throw InputError(inputs[k] + ": holds no frames");
+    // A chunk that starts more than a frame and a half after the previous
+    // one ended leaves a hole: a chunk is missing (a failed task).
+    const std::int64_t first_pts = chunk_start(chunk);
+    if (last_end != AV_NOPTS_VALUE && chunk.front()->duration > 0 &&
+        first_pts - last_end > chunk.front()->duration * 3 / 2)
+      throw InputError(inputs[k] + ": starts " +
+                       std::to_string(double(first_pts - last_end) * av_q2d(stream->time_base)) +
+                       " s after the previous chunk ends: is a chunk missing between them?");
+    for (AVPacket* p : chunk) {
+      if (last_dts != AV_NOPTS_VALUE && p->dts <= last_dts)
         throw InputError(inputs[k] + ": its frames overlap the previous chunk's (are the chunks in order?)");
-      if (packet->dts != AV_NOPTS_VALUE) last_dts = packet->dts;
-      packet->stream_index = stream->index;
-      packet->pos = -1;
-      if (av_interleaved_write_frame(out, packet) < 0) throw OutputError(output + ": write failed (disk full?)");
+      last_dts = p->dts;
+      if (p->pts != AV_NOPTS_VALUE) last_end = std::max(last_end, p->pts + std::max<std::int64_t>(p->duration, 0));
+      p->stream_index = stream->index;
+      p->pos = -1;
+      const int rc = av_interleaved_write_frame(out, p);
+      if (rc < 0) {
+        char why[AV_ERROR_MAX_STRING_SIZE] = {0};
+        av_strerror(rc, why, sizeof(why));
+        throw OutputError(output + ": cannot write " + inputs[k] + "'s packets: " + why);
+      }
     }
     if (k == 0) first_input = std::move(in);  // keeps `first` valid
   }

@@ -71,9 +71,10 @@ struct VideoWriter::Impl {
   }
 
   [[noreturn]] void fail(const std::string& what, int code) const {
+    if (code == AVERROR(EBADF) && !file) throw OutputError(name + " is closed: nowhere to write the video");
     if (code == AVERROR(EPIPE))  // `eyestream run -o - | head`: not a disk problem
-      throw OutputError(name + ": the program reading it closed the pipe " +
-                        (frames > 0 ? "after frame " + std::to_string(frames - 1) : std::string("before any frame")));
+      throw OutputError(name + ": the program reading it closed the pipe (" + std::to_string(frames) +
+                        " frames had gone to the encoder)");
     throw OutputError(name + ": " + what + ": " + av_message(code));
   }
 

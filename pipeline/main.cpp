@@ -83,6 +83,8 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--config", settings.config, "JSON file of parameter values (command line wins)");
   bool yes = false;  // -y, the short --overwrite
   run_cmd->add_flag("-y", yes, "replace outputs that exist (as --overwrite)");
+  bool run_quiet = false;  // -q, the short --quiet, as the other commands take it
+  run_cmd->add_flag("-q", run_quiet, "nothing on stderr but warnings and errors (as --quiet)");
   params.bind(*run_cmd);
 
   samples::SceneOptions scene;
@@ -164,6 +166,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.01, 100.0))
       ->capture_default_str();
   compare_cmd->add_option("--json", cmp.json, "write per-frame and overall metrics here");
+  compare_cmd->add_option("--layer", cmp.layer, "layered EXRs: the layer to compare (default: the beauty pass)");
   compare_cmd->add_flag("--verbose", cmp.verbose, "a line per frame");
 
   ChunkRequest chunks;
@@ -243,6 +246,7 @@ int main(int argc, char** argv) {
       apply_quality_preset(settings.quality, settings);
       params.apply(settings.config);
       settings.overwrite = settings.overwrite || yes;
+      settings.quiet = settings.quiet || run_quiet;
       if (settings.print_plan) {
         for (const Param& p : params.params())
           std::printf("%s = %s\n", p.name.c_str(), ParamSet::value_text(p).c_str());

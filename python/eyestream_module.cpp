@@ -201,7 +201,14 @@ std::map<std::string, std::string> named_settings(const py::kwargs& settings) {
 struct PyFrames {
   explicit PyFrames(eyestream::FrameReader r) : reader(std::move(r)) {}
   eyestream::FrameReader reader;
-  std::mutex busy;
+  mutable std::mutex busy;
+
+  // A property of the input, read under the lock next() holds.
+  template <typename F>
+  auto read(F f) const {
+    const std::lock_guard<std::mutex> one_at_a_time(busy);
+    return f(reader);
+  }
 
   py::tuple next() {
     eyestream::InputFrame f;
@@ -284,11 +291,11 @@ PYBIND11_MODULE(eyestream, m) {
            py::arg("path"))
       .def("__iter__", [](PyFrames& f) -> PyFrames& { return f; })
       .def("__next__", &PyFrames::next)
-      .def_property_readonly("width", [](const PyFrames& f) { return f.reader.width(); })
-      .def_property_readonly("height", [](const PyFrames& f) { return f.reader.height(); })
-      .def_property_readonly("fps", [](const PyFrames& f) { return f.reader.fps(); })
-      .def_property_readonly("frame_count", [](const PyFrames& f) { return f.reader.frame_count(); })
-      .def_property_readonly("description", [](const PyFrames& f) { return f.reader.description(); });
+      .def_property_readonly("width", [](const PyFrames& f) { return f.read([](const auto& r) { return r.width(); }); })
+      .def_property_readonly("height", [](const PyFrames& f) { return f.read([](const auto& r) { return r.height(); }); })
+      .def_property_readonly("fps", [](const PyFrames& f) { return f.read([](const auto& r) { return r.fps(); }); })
+      .def_property_readonly("frame_count", [](const PyFrames& f) { return f.read([](const auto& r) { return r.frame_count(); }); })
+      .def_property_readonly("description", [](const PyFrames& f) { return f.read([](const auto& r) { return r.description(); }); });
 
   m.def(
       "read_gaze",

@@ -61,7 +61,14 @@ double LuminanceField::patch_log_mean(double x, double y, double half_x, double 
   const int y0 = int(std::clamp<long>(py0, 0, rows)), y1 = int(std::clamp<long>(py1, 0, rows));
   const double total = double(px1 - px0) * double(py1 - py0);
   const double inside = double(x1 - x0) * double(y1 - y0);
-  const double sum = region_sum(luminance_, cv::Mat(), x0, x1, y0, y1);
+  double sum;
+  if (inside <= kDirectSumPixels) {
+    sum = region_sum(luminance_, cv::Mat(), x0, x1, y0, y1);
+  } else {
+    if (integral_.empty()) cv::integral(luminance_, integral_, CV_64F);
+    sum = integral_.at<double>(y1, x1) - integral_.at<double>(y0, x1) - integral_.at<double>(y1, x0) +
+          integral_.at<double>(y0, x0);
+  }
   return std::log10((sum + (total - inside) * surround_cd_m2) / total);
 }
 

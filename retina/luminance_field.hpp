@@ -1,8 +1,10 @@
 // Mean luminance over patches of a frame: the adaptation target around the
 // gaze, the log of the average luminance of a small patch (Jacobs et al.
 // 2015, sec. 2.1), and the field luminance the pupil responds to. A frame
-// is asked for one to a few patches, so each is summed directly (in double,
-// row by row) rather than through an integral image of the whole frame.
+// is mostly asked for a few small patches, so each is summed directly (in
+// double, row by row); a patch over kDirectSumPixels (a wide adaptation
+// patch) is read from an integral image of the frame, made on first need.
+// Not for concurrent use (the integral image is made lazily).
 #pragma once
 
 #include <opencv2/core.hpp>
@@ -36,7 +38,9 @@ class LuminanceField {
   const cv::Mat& luminance() const { return luminance_; }
 
  private:
+  static constexpr double kDirectSumPixels = 65536;
   cv::Mat luminance_;  // CV_32F
+  mutable cv::Mat integral_;  // CV_64F, (rows+1) x (cols+1); made when a patch is big
   double mean_ = 0.0;
 };
 

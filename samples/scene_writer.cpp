@@ -1,6 +1,7 @@
 #include "samples/scene_writer.hpp"
 
 #include <filesystem>
+#include <utility>
 #include <opencv2/imgcodecs.hpp>
 
 #include "io/exr_file.hpp"
@@ -19,6 +20,7 @@ void SceneWriter::add_frame(const cv::Mat& rgb, const cv::Mat& target_mask) {
   io::write_exr(file.temp_path().string(), scaled, io::ExrWriteOptions{true, white_, fps_});
   files_.push_back(std::move(file));
   if (target_mask.empty()) return;
+  ++masks_;
   std::vector<unsigned char> png;
   cv::imencode(".png", target_mask, png);
   io::StagedFile mask(io::format_pattern(dir_ + "/target/%05d.png", index));
@@ -30,15 +32,16 @@ void SceneWriter::finish(const std::vector<io::GazeSample>& gaze) {
   io::write_gaze_csv(dir_ + "/gaze.csv", gaze);
   for (io::StagedFile& f : files_) f.commit();
   files_.clear();
-  // A scene written over a longer one: its frames beyond this one's go, so
-  // the folder holds one scene.
-  for (const char* kind : {"frames", "target"}) {
+  // A scene written over another: the old one's frames and masks beyond
+  // this one's go, so the folder holds one scene.
+  for (const auto& [kind, kept] : {std::pair{"frames", frames_}, std::pair{"target", masks_}}) {
     const std::filesystem::path folder = std::filesystem::path(dir_) / kind;
     if (!std::filesystem::is_directory(folder)) continue;
     for (const auto& e : std::filesystem::directory_iterator(folder)) {
       const std::string stem = e.path().stem().string();
-      const bool numbered = stem.size() == 5 && stem.find_first_not_of("0123456789") == std::string::npos;
-      if (numbered && std::stoll(stem) >= frames_) std::filesystem::remove(e.path());
+      const bool numbered =
+          stem.size() >= 5 && stem.size() <= 12 && stem.find_first_not_of("0123456789") == std::string::npos;
+      if (numbered && std::stoll(stem) >= kept) std::filesystem::remove(e.path());
     }
   }
 }

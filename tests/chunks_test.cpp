@@ -106,5 +106,38 @@ TEST(Chunks, ChunkVideosJoinLosslessly) {
   EXPECT_FALSE(std::filesystem::exists(dir / "bad.mp4"));
 }
 
+// Matroska chunks (presentation times only) join too, into MKV or MP4; a
+// missing chunk and a chunk made with other colour settings are refused,
+// naming the chunk.
+TEST(Chunks, MatroskaChunksJoinAndAMissingOrMismatchedChunkIsRefused) {
+  test::ScratchDir dir;
+  ASSERT_EQ(test::run_eyestream("sample flash -o " + (dir / "s") + " --width 64 --height 48 --duration 1").exit_code,
+            0);
+  const auto part = [&](int k, const std::string& extra) {
+    const std::string out = dir / ("p" + std::to_string(k) + "_" + std::to_string(extra.size()) + ".mkv");
+    const auto r = test::run_eyestream("run -i " + (dir / "s/frames") + " -o " + out + " --start-frame " +
+                                       std::to_string(10 * k) + " --end-frame " + std::to_string(10 * k + 10) +
+                                       " --preroll 0" + extra);
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    return out;
+  };
+  const std::string a = part(0, ""), b = part(1, ""), c = part(2, ""), hdr = part(1, " --hdr10");
+  for (const char* ext : {".mkv", ".mp4"}) {
+    const std::string joined = dir / (std::string("all") + ext);
+    const auto r = test::run_eyestream("concat -o " + joined + " " + a + " " + b + " " + c);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    io::VideoReader v(joined);
+    int frames = 0;
+    while (v.next()) ++frames;
+    EXPECT_EQ(frames, 30) << ext;
+  }
+  auto r = test::run_eyestream("concat -o " + (dir / "gap.mkv") + " " + a + " " + c);
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_NE(r.output.find("is a chunk missing between them?"), std::string::npos) << r.output;
+  r = test::run_eyestream("concat -o " + (dir / "mix.mkv") + " " + a + " " + hdr);
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "mix.mkv"));
+}
+
 }  // namespace
 }  // namespace eyestream

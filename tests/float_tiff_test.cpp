@@ -27,13 +27,16 @@ void put(std::vector<unsigned char>& b, std::uint32_t v, int bytes) {
   for (int i = 0; i < bytes; ++i) b.push_back(static_cast<unsigned char>(v >> (8 * i)));
 }
 
-// A little-endian classic TIFF with one IFD: `tags` (sorted by id) and the
-// strips, one per plane; the strip offsets and counts are filled in here.
-std::vector<unsigned char> tiff_file(std::vector<Tag> tags, const std::vector<std::vector<unsigned char>>& strips) {
-  tags.push_back({273, 4, std::vector<std::uint32_t>(strips.size())});  // StripOffsets
+// A little-endian classic TIFF with one IFD: `tags` and the data chunks
+// (strips, or tiles when `tiled`), in libtiff's order; their offsets and
+// byte counts are filled in here.
+std::vector<unsigned char> tiff_file(std::vector<Tag> tags, const std::vector<std::vector<unsigned char>>& strips,
+                                     bool tiled = false) {
+  const std::uint16_t offsets_tag = tiled ? 324 : 273, counts_tag = tiled ? 325 : 279;
+  tags.push_back({offsets_tag, 4, std::vector<std::uint32_t>(strips.size())});
   std::vector<std::uint32_t> counts;
   for (const auto& s : strips) counts.push_back(std::uint32_t(s.size()));
-  tags.push_back({279, 4, counts});  // StripByteCounts
+  tags.push_back({counts_tag, 4, counts});
   std::sort(tags.begin(), tags.end(), [](const Tag& a, const Tag& b) { return a.id < b.id; });
   const auto size_of = [](const Tag& t) { return t.values.size() * (t.type == 3 ? 2 : 4); };
   const std::uint32_t ifd_end = 8 + 2 + 12 * std::uint32_t(tags.size()) + 4;
@@ -41,7 +44,7 @@ std::vector<unsigned char> tiff_file(std::vector<Tag> tags, const std::vector<st
   for (const Tag& t : tags) external += size_of(t) > 4 ? std::uint32_t(size_of(t)) : 0;
   std::uint32_t at = external;
   for (Tag& t : tags)
-    if (t.id == 273)
+    if (t.id == offsets_tag)
       for (size_t k = 0; k < strips.size(); ++k) t.values[k] = at, at += std::uint32_t(strips[k].size());
   std::vector<unsigned char> b = {'I', 'I', 42, 0, 8, 0, 0, 0};
   put(b, std::uint32_t(tags.size()), 2);
@@ -121,6 +124,33 @@ TEST(FloatTiff, GreyAndAlphaInSeparatePlanesIsGrey) {
   const cv::Mat rgb = io::read_float_tiff(path);
   EXPECT_EQ(rgb.at<cv::Vec3f>(0, 0), cv::Vec3f(40, 40, 40));
   EXPECT_EQ(rgb.at<cv::Vec3f>(0, 1), cv::Vec3f(50, 50, 50));
+}
+
+// Tiles, 16x16, over a 20x18 image (edge tiles padded), in two planes of
+// grey and alpha: every pixel's value is its own position.
+TEST(FloatTiff, TiledPlanarImagesWithPartialEdgeTiles) {
+  test::ScratchDir dir;
+  const int w = 20, h = 18, tile = 16;
+  std::vector<Tag> tags = {{256, 4, {std::uint32_t(w)}}, {257, 4, {std::uint32_t(h)}}, {258, 3, {32, 32}},
+                           {259, 3, {1}}, {262, 3, {1}}, {277, 3, {2}}, {284, 3, {2}},
+                           {322, 4, {std::uint32_t(tile)}}, {323, 4, {std::uint32_t(tile)}}, {338, 3, {2}},
+                           {339, 3, {3, 3}}};
+  std::vector<std::vector<unsigned char>> tiles;
+  for (int plane = 0; plane < 2; ++plane)
+    for (int ty = 0; ty < h; ty += tile)
+      for (int tx = 0; tx < w; tx += tile) {
+        std::vector<float> v(size_t(tile) * tile, -1.0f);  // padding beyond the image
+        for (int y = 0; y < tile; ++y)
+          for (int x = 0; x < tile; ++x)
+            if (ty + y < h && tx + x < w) v[size_t(y) * tile + x] = plane == 0 ? float(100 * (ty + y) + tx + x) : 1.0f;
+        tiles.push_back(floats(v));
+      }
+  const auto path = write(dir, "tiled.tif", tiff_file(tags, tiles, true));
+  const cv::Mat rgb = io::read_float_tiff(path);
+  ASSERT_EQ(rgb.size(), cv::Size(w, h));
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      ASSERT_EQ(rgb.at<cv::Vec3f>(y, x), cv::Vec3f::all(float(100 * y + x))) << x << ", " << y;
 }
 
 // Through the command line: one error line naming the file, no OpenCV or

@@ -125,6 +125,47 @@ TEST(GazeExports, BlinksCanBeLeftOutOrNamed) {
   }
 }
 
+// Options that do not apply to the log read are refused, not ignored; a
+// blinks option may name the export's folder; malformed values name their line.
+TEST(GazeExports, OptionsThatDoNotApplyAndMalformedValuesAreRefused) {
+  test::ScratchDir dir;
+  write(dir / "native.csv", "t,x,y\n0,1,1\n0.1,2,2\n");
+  GazeImportOptions o = frame_1000x500();
+  o.sync_message = "TRIAL_START";
+  EXPECT_THROW(read_gaze(dir / "native.csv", o), UsageError) << "a message on a native log";
+  o = frame_1000x500();
+  o.recording = "rec-a";
+  EXPECT_THROW(read_gaze(dir / "native.csv", o), UsageError) << "a recording on a native log";
+  o = frame_1000x500();
+  o.blinks = dir / "native.csv";
+  EXPECT_THROW(read_gaze(dir / "native.csv", o), UsageError) << "blinks with a native log";
+  const std::string asc = "MSG\t1000 DISPLAY_COORDS 0 0 999 499\nSTART\t1000 \tLEFT\tSAMPLES\tEVENTS\n"
+                          "MSG\t1000 GO\n1000\t1.0\t2.0\t100.0\t...\n1001\tabc\t2.0\t100.0\t...\nEND\t1002\n";
+  o = frame_1000x500();
+  o.sync_message = "GO";
+  o.sync_clock = 1.0;
+  EXPECT_THROW(parse_gaze(asc, "s.asc", o), UsageError) << "two ways to set time 0";
+  try {
+    parse_gaze(asc, "s.asc", frame_1000x500());
+    ADD_FAILURE() << "a sample position 'abc'";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("s.asc:5: sample position 'abc'"), std::string::npos) << e.what();
+  }
+  const std::string tsv = "Recording timestamp [ms]\tRecording resolution width\tRecording resolution height\t"
+                          "Gaze point X\tGaze point Y\n100\tabc\t1080\t1\t2\n";
+  EXPECT_THROW(parse_gaze(tsv, "t.tsv", frame_1000x500()), InputError) << "Recording resolution 'abc'";
+  // --gaze-blinks naming the export's folder reads its blinks.csv.
+  test::ScratchDir core;
+  write(core / "gaze_positions.csv", "gaze_timestamp,world_index,confidence,norm_pos_x,norm_pos_y,base_data\n"
+                                     "100.00,0,0.9,0.5,0.5,x\n100.10,1,0.9,0.5,0.5,x\n");
+  test::ScratchDir elsewhere;
+  write(elsewhere / "blinks.csv", "id,start_timestamp,duration,end_timestamp,start_frame_index,index,end_frame_index,"
+                                  "confidence,filter_response,base_data\n1,100.05,0.1,100.15,1,1,1,0.8,0.5 0.6,x\n");
+  o = frame_1000x500();
+  o.blinks = elsewhere.path().string();
+  EXPECT_EQ(read_gaze(core / "gaze_positions.csv", o)[1].state, EyeState::kClosed);
+}
+
 // Pupil Cloud's Marker Mapper: the surface (the display watched) from its
 // top left (0, 0) to its bottom right (1, 1); empty where it was not found.
 const std::string kSurface =

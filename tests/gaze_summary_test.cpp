@@ -72,6 +72,12 @@ TEST_F(GazeSummaryCli, PrintPlanShowsTheSummaryAndRefusesWhatRunRefuses) {
   r = run_with("t,x,y\n0,1,1\nzero,2,2\n", " --print-plan");
   EXPECT_EQ(r.exit_code, 3) << r.output;
   EXPECT_NE(r.output.find("g.csv"), std::string::npos) << r.output;
+  // What run refuses before any work, --print-plan refuses too.
+  r = run_with(log_of(0, 1, 0.01, 32, 18), " --print-plan --checkpoint " + (dir / "c.ckp") + " --checkpoint-every 5");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  std::ofstream(dir / "v.mp4") << "x";
+  r = run_with(log_of(0, 1, 0.01, 32, 18), " --print-plan");
+  EXPECT_EQ(r.exit_code, 4) << r.output;
 }
 
 }  // namespace

@@ -95,8 +95,11 @@ TEST(Parameters, AnUnknownKeySuggestsTheNearestOne) {
   EXPECT_NE(usage_error({}, dir / "close.json").find("did you mean 'adapt-rate-up'?"), std::string::npos);
   std::ofstream(dir / "far.json") << R"({"zzzzzzzzzz": 1})";
   EXPECT_EQ(usage_error({}, dir / "far.json").find("did you mean"), std::string::npos) << "nothing near";
+  std::ofstream(dir / "gazes.json") << R"({"Gaz": "g.csv"})";
+  EXPECT_NE(usage_error({}, dir / "gazes.json").find("the run's --gaze"), std::string::npos)
+      << usage_error({}, dir / "gazes.json");
   std::ofstream(dir / "gaze.json") << R"({"gaze": "g.csv"})";
-  EXPECT_NE(usage_error({}, dir / "gaze.json").find("'gaze' goes on the command line (--gaze)"), std::string::npos)
+  EXPECT_NE(usage_error({}, dir / "gaze.json").find("'gaze' is the run's --gaze, which goes on the command line"), std::string::npos)
       << usage_error({}, dir / "gaze.json");
 }
 

@@ -100,8 +100,11 @@ void RetinaStage::advance(const cv::Mat& rgb, const std::vector<GazeSegment>& fr
   // the gaze are carried there.
   const FrameProjection& p = *plan_.projection;
   const cv::Scalar surround = cv::Scalar::all(surround_cd_m2);
-  // Reduced first, then carried to cone space: the transform is linear, so
-  // the area means commute with it, and it runs on the reduced pixels only.
+  // Reduced first, then carried to cone space, so the transform runs on the
+  // reduced pixels only. The transform is linear and the area means commute
+  // with it; only its clamp of negative cone values (light no real scene
+  // has: out-of-gamut or ringing inputs) now acts on the mean instead of on
+  // each pixel.
   const cv::Mat reduced = p.identity() ? grid_.reduce(rgb) : reduce_frame(rgb);
   const cv::Mat lms = retina::to_cone_stimulus(reduced, plan_.retina.double_precision ? CV_64F : CV_32F);
   std::vector<GazeSegment> segments = frame_segments;

@@ -56,7 +56,8 @@ TargetRegion::TargetRegion(const std::string& rectangle, const std::string& mask
   if (!rectangle.empty() && !mask.empty()) throw UsageError("--target and --target-mask: give one of them");
   if (!rectangle.empty()) rect_ = parse_rectangle(rectangle, frame);
   if (!mask.empty())
-    for (const io::SequenceEntry& e : io::list_sequence(mask, {".png", ".pgm", ".tif", ".tiff", ".bmp"}, false))
+    for (const io::SequenceEntry& e : io::list_sequence(mask, {".png", ".pgm", ".tif", ".tiff", ".bmp"}, false,
+                                                              "a target mask is needed for every frame"))
       masks_.push_back(e.path), io::protect_input(e.path);
 }
 

@@ -14,6 +14,7 @@
 
 #include "io/background_sink.hpp"
 #include "io/error.hpp"
+#include "io/frame_sequence.hpp"
 #include "io/gaze_import.hpp"
 #include "io/gaze_summary.hpp"
 #include "io/library_logging.hpp"
@@ -82,10 +83,31 @@ LoadedGaze load_gaze(const Settings& s, const io::SourceInfo& info) {
   return g;
 }
 
+// The refusals `run` makes before any work (and --print-plan with it):
+// the frame range, the outputs, outputs that exist, the checkpoint options.
+void refuse_before_work(const Settings& s, const io::SourceInfo& info) {
+  if (s.end_frame != 0 && s.end_frame <= s.start_frame)
+    throw UsageError("--end-frame " + std::to_string(s.end_frame) + " must be after --start-frame " +
+                     std::to_string(s.start_frame));
+  check_outputs(run_outputs(s));
+  if (!s.overwrite && !s.resume) {
+    const std::int64_t end = info.frame_count > 0 && (s.end_frame == 0 || s.end_frame > info.frame_count)
+                                 ? info.frame_count
+                                 : s.end_frame != 0 && info.frame_count > 0 ? s.end_frame : -1;
+    refuse_existing(run_outputs(s), s.start_frame, end);
+  }
+  if ((s.checkpoint_every > 0 || s.resume) && s.checkpoint.empty())
+    throw UsageError("--checkpoint-every and --resume need --checkpoint FILE");
+  const std::string ext = io::lower_extension(s.output);
+  if (s.checkpoint_every > 0 && (s.output == "-" || (ext != ".png" && ext != ".exr")))
+    throw UsageError("--checkpoint-every needs a PNG or EXR frame output; split a video with `eyestream chunks`");
+}
+
 }  // namespace
 
 std::string describe_run(const Settings& s) {
   const std::unique_ptr<io::FrameSource> source = open_input(s);
+  refuse_before_work(s, source->info());  // what `run` would refuse, refused here too
   const PreviewRenderer renderer(s, source->info(), io::sink_needs(s.output, s.sink));
   std::string text = s.input + ": " + source->info().description + "\n" + renderer.describe();
   const LoadedGaze gaze = load_gaze(s, source->info());  // refused here as `run` would refuse it
@@ -144,9 +166,6 @@ std::int64_t prepare_checkpoints(const Settings& s, const std::string& settings,
 }  // namespace
 
 RunSummary run(const Settings& s) {
-  if (s.end_frame != 0 && s.end_frame <= s.start_frame)
-    throw UsageError("--end-frame " + std::to_string(s.end_frame) + " must be after --start-frame " +
-                     std::to_string(s.start_frame));
   cv::setNumThreads(s.threads > 0 ? s.threads : -1);
   io::set_library_verbosity(s.verbose);
   std::unique_ptr<io::FrameSource> source = open_input(s);
@@ -159,13 +178,7 @@ RunSummary run(const Settings& s) {
     for (const std::string& w : gaze.summary->warnings) std::fprintf(stderr, "eyestream: warning: %s\n", w.c_str());
   }
   const TargetRegion target(s.target_rect, s.target_mask, cv::Size(info.width, info.height));
-  check_outputs(run_outputs(s));  // before anything is written
-  if (!s.overwrite && !s.resume) {
-    const std::int64_t end = info.frame_count > 0 && (s.end_frame == 0 || s.end_frame > info.frame_count)
-                                 ? info.frame_count
-                                 : s.end_frame != 0 && info.frame_count > 0 ? s.end_frame : -1;
-    refuse_existing(run_outputs(s), s.start_frame, end);
-  }
+  refuse_before_work(s, info);
   io::SinkOptions sink_options = s.sink;
   sink_options.video.frames_per_second = info.frames_per_second;
   sink_options.png_gamma = s.encoding.gamma;

@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -170,6 +171,9 @@ size_t edit_distance(const std::string& a, const std::string& b) {
   return row[b.size()];
 }
 
+// Options a parameter file may not hold: the run's inputs and outputs.
+const char* const kCommandLineOnly[] = {"input", "gaze", "output", "config", "overwrite"};
+
 // " (did you mean 'x'?)" for the parameter nearest to `key` (underscores
 // read as dashes), when it is within a third of the key's length; "".
 std::string suggestion(const std::string& key, const std::vector<Param>& params) {
@@ -191,11 +195,12 @@ void ParamSet::apply_json(const nlohmann::json& object, const std::string& origi
     auto found = std::find_if(params_.begin(), params_.end(), [&](const Param& p) { return p.name == it.key(); });
     // The run's inputs and outputs are named on its command line, not in a
     // file of settings shared by runs.
-    static const char* const kCommandLineOnly[] = {"input", "gaze", "output", "config", "overwrite"};
+    std::string lower = it.key();
+    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
     for (const char* name : kCommandLineOnly)
-      if (found == params_.end() && it.key() == name)
-        throw UsageError(origin + ": '" + it.key() + "' goes on the command line (--" + it.key() +
-                         "), not in a parameter file");
+      if (found == params_.end() && edit_distance(lower, name) <= (lower.size() >= 3 ? 1u : 0u))
+        throw UsageError(origin + ": '" + it.key() + "' is the run's --" + name +
+                         ", which goes on the command line, not in a parameter file");
     if (found == params_.end())
       throw UsageError(origin + ": unknown parameter '" + it.key() + "'" + suggestion(it.key(), params_));
     set_json(*found, it.value(), origin + ": ");

@@ -90,7 +90,7 @@ cv::Mat heat_map(const cv::Mat& de, double scale) {
 }  // namespace
 
 CompareResult compare(const CompareOptions& o) {
-  io::DisplaySequence a(o.a), b(o.b);
+  io::DisplaySequence a(o.a, o.layer), b(o.b, o.layer);
   CompareResult result;
   std::vector<io::StagedFile> diffs;
   nlohmann::json frames = nlohmann::json::array();

@@ -25,6 +25,7 @@ struct CompareOptions {
   std::string diff_out;       // PNG pattern for difference images (CIEDE2000 heat maps)
   double diff_scale = 5.0;    // CIEDE2000 shown at full scale
   std::string json;           // report file
+  std::string layer;          // layered EXRs: the layer to compare ("" the beauty pass)
   bool verbose = false;       // a line per frame
 };
 

@@ -9,6 +9,7 @@
 #include "glare/psf_kernel.hpp"
 #include "io/error.hpp"
 #include "io/exr_file.hpp"
+#include "io/png_file.hpp"
 #include "io/staged_file.hpp"
 #include "pipeline/settings/plan.hpp"
 
@@ -84,8 +85,7 @@ PsfSummary write_psf(const Settings& s, const PsfRequest& r) {
   flat.convertTo(picture, CV_8U, 255.0 / 8.0 / std::log(10.0), 255.0);
   picture = picture.reshape(3);
   cv::cvtColor(picture, picture, cv::COLOR_RGB2BGR);
-  std::vector<unsigned char> png;
-  cv::imencode(".png", picture, png);
+  const std::vector<unsigned char> png = io::encode_png(picture);  // tagged as the other pictures are
   io::StagedFile png_file(std::filesystem::path(r.output).replace_extension(".png"));
   io::write_all(png_file, png);
   exr.commit();
