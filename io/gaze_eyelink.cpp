@@ -31,7 +31,7 @@ std::vector<GazeSample> parse_eyelink(const std::string& text, const std::string
   bool blinking = false;
   const bool blocks = text.rfind("START", 0) == 0 || text.find("\nSTART") != std::string::npos;
   bool recording = !blocks;
-  bool display_coords = false;
+  bool display_coords = false, gaze_coords = false;
   bool pupil_area = true;  // EyeLink's default; "PUPIL DIAMETER" says otherwise
   double screen_w = o.source_width, screen_h = o.source_height;
   std::vector<GazeSample> raw;  // positions in screen pixels until the end
@@ -43,12 +43,15 @@ std::vector<GazeSample> parse_eyelink(const std::string& text, const std::string
     if (w.empty()) continue;
     const std::string where = name + ":" + std::to_string(line_no);
     if (w[0] == "MSG") {
+      // The screen: DISPLAY_COORDS, else GAZE_COORDS (the tracker's own
+      // record of the gaze's pixel range), unless given.
       for (size_t i = 0; i + 4 < w.size(); ++i)
-        if (w[i] == "DISPLAY_COORDS" && o.source_width <= 0) {
+        if ((w[i] == "DISPLAY_COORDS" || (w[i] == "GAZE_COORDS" && !display_coords)) && o.source_width <= 0) {
           double l, t, r, b;
           if (parse_number(w[i + 1], l) && parse_number(w[i + 2], t) && parse_number(w[i + 3], r) &&
               parse_number(w[i + 4], b))
-            screen_w = r - l + 1, screen_h = b - t + 1, display_coords = true;
+            screen_w = r - l + 1, screen_h = b - t + 1, display_coords = w[i] == "DISPLAY_COORDS",
+            gaze_coords = true;
         }
       // "MSG time [offset] text": Experiment Builder writes an integer offset
       // when the message was logged after its event, at time - offset.
@@ -136,8 +139,8 @@ std::vector<GazeSample> parse_eyelink(const std::string& text, const std::string
       s.x = x, s.y = y;
     raw.push_back(s);
   }
-  if (!display_coords && (o.source_width <= 0 || o.source_height <= 0))
-    throw InputError(name + ": no DISPLAY_COORDS message gives the screen the gaze is in; give its size with "
+  if (!gaze_coords && (o.source_width <= 0 || o.source_height <= 0))
+    throw InputError(name + ": no DISPLAY_COORDS or GAZE_COORDS message gives the screen the gaze is in; give its size with "
                             "--gaze-source-width and --gaze-source-height");
   if (!o.sync_message.empty() && sync_s && !*sync_s)
     throw InputError(name + ": no MSG line contains '" + o.sync_message + "' (--gaze-sync-message)");

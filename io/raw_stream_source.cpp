@@ -9,8 +9,10 @@ namespace eyestream::io {
 void parse_frame_size(const std::string& text, int& width, int& height) {
   char x = 0, extra = 0;
   if (std::sscanf(text.c_str(), "%d%c%d%c", &width, &x, &height, &extra) != 3 || (x != 'x' && x != 'X') ||
-      width < 1 || height < 1 || width > 65536 || height > 65536)
+      width < 1 || height < 1)
     throw UsageError("--size '" + text + "': expected WIDTHxHEIGHT, e.g. 1920x1080");
+  if (width > 65536 || height > 65536)
+    throw UsageError("--size '" + text + "': at most 65536 pixels a side");
 }
 
 RawStreamSource::RawStreamSource(std::FILE* stream, std::string name, const RawStreamOptions& o)

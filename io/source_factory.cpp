@@ -26,10 +26,16 @@ std::unique_ptr<FrameSource> open_source(const std::string& input, const SourceO
   if (!o.raw_size.empty())  // the size of files and videos is their own
     throw UsageError("--size " + o.raw_size + ": only raw frames on standard input (-i -) need it; " + input +
                      " gives its own");
-  if (is_float_image_input(input)) return std::make_unique<FloatImageSource>(input, o.exr);
+  if (is_float_image_input(input)) {
+    if (!o.exr.layer.empty())
+      throw UsageError("--layer " + o.exr.layer + ": " + input + " holds stills, which have no layers");
+    return std::make_unique<FloatImageSource>(input, o.exr);
+  }
   if (is_printf_pattern(input) || lower_extension(input) == ".exr" || std::filesystem::is_directory(input) ||
       !std::filesystem::exists(input))
     return std::make_unique<ExrSequenceSource>(input, o.exr);
+  if (!o.exr.layer.empty())  // layers are EXR's
+    throw UsageError("--layer " + o.exr.layer + ": " + input + " is a video, which has no layers");
   VideoSourceOptions video = o.video;
   video.max_pixels = o.exr.max_pixels;
   return std::make_unique<VideoSource>(input, video);

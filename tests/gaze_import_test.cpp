@@ -82,6 +82,16 @@ TEST(GazeImport, TobiiTakesTheScreenFromRecordingResolution) {
   EXPECT_NE(read.notes.back().find("1920x1200"), std::string::npos) << read.notes.back();
 }
 
+// Without DISPLAY_COORDS, the tracker's GAZE_COORDS gives the screen.
+TEST(GazeImport, EyeLinkGazeCoordsGiveTheScreenWithoutDisplayCoords) {
+  const std::string asc = "MSG\t1000 GAZE_COORDS 0.00 0.00 1999.00 999.00\nSTART\t1000 \tLEFT\tSAMPLES\n"
+                          "1000\t1000.0\t500.0\t100.0\t...\nEND\t1001\n";
+  const auto s = parse_gaze(asc, "g.asc", frame_1000x500());
+  ASSERT_EQ(s.size(), 1u);
+  EXPECT_DOUBLE_EQ(s[0].x, 500.0) << "the 2000x1000 screen's centre";
+  EXPECT_DOUBLE_EQ(s[0].y, 250.0);
+}
+
 TEST(GazeImport, TobiiMillisecondsByDefault) {
   const std::string text = "Recording timestamp\tGaze point X\tGaze point Y\n100\t1\t2\n150\t3\t4\n";
   const auto s = parse_gaze(text, "export.tsv", frame_1000x500());
