@@ -102,8 +102,8 @@ std::vector<SequenceEntry> list_sequence(const std::string& input, const std::ve
     if (names.empty()) throw InputError(input + ": folder holds no frame files");
     std::sort(names.begin(), names.end());
     // Numbered files (frame_00010.exr ...) keep their numbers, as a pattern
-    // would give them, when the numbers run on without a gap or a repeat;
-    // otherwise (every tenth frame, mixed names) the position by name.
+    // would give them, and a gap is refused as a pattern's is (or skipped);
+    // names without numbers, or two with one number, go by their position.
     std::vector<SequenceEntry> out;
     for (size_t i = 0; i < names.size(); ++i) {
       const std::string stem = fs::path(names[i]).stem().string();
@@ -117,10 +117,14 @@ std::vector<SequenceEntry> list_sequence(const std::string& input, const std::ve
     }
     std::sort(out.begin(), out.end(), [](const SequenceEntry& a, const SequenceEntry& b) { return a.number < b.number; });
     for (size_t i = 1; i < out.size(); ++i)
-      if (out[i].number != out[i - 1].number + 1) {
+      if (out[i].number == out[i - 1].number) {
         out.clear();
         break;
       }
+    for (size_t i = 1; i < out.size(); ++i)
+      if (out[i].number != out[i - 1].number + 1 && !skip_missing)
+        throw InputError(out[i - 1].path + " is followed by " + out[i].path + ": missing frame in the sequence (" +
+                         gap_hint + ")");
     if (!out.empty()) return out;
     for (size_t i = 0; i < names.size(); ++i) out.push_back({names[i], std::int64_t(i)});
     return out;

@@ -23,9 +23,9 @@ std::string format_pattern(const std::string& pattern, std::int64_t number);
 
 // Lists the frames of `input`: a printf pattern (the numbers found on disk,
 // from the smallest to the largest), a folder (its files ending in one of
-// `extensions`: numbered by the digits their names end in when those run on
-// without a gap or a repeat, else by their position by name), or a single
-// file. A gap in a numbered sequence is
+// `extensions`: numbered by the digits their names end in, a gap refused
+// as a pattern's unless skip_missing; by their position by name when a name
+// has no number or two share one), or a single file. A gap in a numbered sequence is
 // an InputError naming the first missing file, unless skip_missing.
 // No frame at all is an InputError naming `input`.
 // `gap_hint` ends the message of a gap ("use --skip-missing ..." for run).

@@ -104,11 +104,15 @@ std::vector<GazeSample> parse_eyelink(const std::string& text, const std::string
     // Binocular lines: "time xl yl pl xr yr pr"; the chosen eye, or the
     // mean of the two (the one seen when the other is missing).
     // A position is a number or "." (missing); anything else is a malformed line.
+    // (edf2asc -miss NaN writes "nan"; the right eye's columns are checked
+    // only when a START line says the file is binocular.)
     for (size_t i : {size_t(1), size_t(2), size_t(4), size_t(5)}) {
-      if (i >= w.size() || (i >= 4 && !(binocular || (!blocks && w.size() >= 7)))) continue;
+      if (i >= w.size() || (i >= 4 && !binocular)) continue;
       double v;
-      if (w[i] != "." && !parse_number(w[i], v))
-        throw InputError(where + ": sample position '" + w[i] + "' is neither a number nor '.'");
+      const std::string& f = w[i];
+      const bool missing = f == "." || f == "nan" || f == "NaN" || f == "-nan" || f == "NAN";
+      if (!missing && !parse_number(f, v))
+        throw InputError(where + ": sample position '" + f + "' is neither a number nor '.'");
     }
     double xl, yl, xr, yr;
     const bool left = w.size() >= 3 && parse_number(w[1], xl) && parse_number(w[2], yl);

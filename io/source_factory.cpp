@@ -14,6 +14,7 @@ std::unique_ptr<FrameSource> open_source(const std::string& input, const SourceO
   if (input == "-") {
     RawStreamOptions raw;
     if (o.raw_size.empty()) throw UsageError("-i -: raw frames on standard input need --size WxH");
+    if (!o.exr.layer.empty()) throw UsageError("--layer " + o.exr.layer + ": raw frames on standard input have no layers");
     parse_frame_size(o.raw_size, raw.width, raw.height);
     if (std::int64_t(raw.width) * raw.height > o.exr.max_pixels)
       throw UsageError("--size " + o.raw_size + " exceeds the limit of " + std::to_string(o.exr.max_pixels) +

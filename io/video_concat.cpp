@@ -63,44 +63,50 @@ LightMetadata light_metadata(const std::vector<std::string>& inputs) {
   return m;
 }
 
-// A chunk's video packets in decode order, timed in `time_base`. Matroska
-// stores presentation times only, so its demuxer leaves most decode times
-// unset; they are made again here as a muxer needs them: the presentation
-// times in order, moved back by the largest reordering (so each packet is
-// decoded no later than it is shown, and the times rise).
-std::vector<AVPacket*> chunk_packets(InputFile& in, AVRational time_base) {
-  std::vector<AVPacket*> packets;
+struct PacketFree {
+  void operator()(AVPacket* p) const { av_packet_free(&p); }
+};
+using Packet = std::unique_ptr<AVPacket, PacketFree>;
+
+// A chunk's video packets in decode order, timed in `time_base` (held in
+// memory: a chunk's compressed frames). Matroska stores presentation times
+// only, so its demuxer leaves most decode times unset; they are made again
+// here as a muxer needs them: the presentation times in order, moved back
+// by `delay` (the codec's reordering depth in frames), or more if this
+// chunk reorders deeper, so each packet is decoded no later than it is
+// shown and, with one delay for every chunk, the times rise across chunks.
+std::vector<Packet> chunk_packets(InputFile& in, const std::string& path, AVRational time_base,
+                                  std::int64_t delay) {
+  std::vector<Packet> packets;
   const AVRational src = in.format->streams[in.stream]->time_base;
   bool missing = false;
-  for (AVPacket* p = av_packet_alloc(); p; p = av_packet_alloc()) {
-    if (av_read_frame(in.format, p) < 0) {
-      av_packet_free(&p);
-      break;
-    }
-    if (p->stream_index != in.stream) {
-      av_packet_free(&p);
-      continue;
-    }
-    av_packet_rescale_ts(p, src, time_base);
+  for (;;) {
+    Packet p(av_packet_alloc());
+    if (!p) throw InputError(path + ": out of memory");
+    const int rc = av_read_frame(in.format, p.get());
+    if (rc == AVERROR_EOF) break;
+    if (rc < 0) throw InputError(path + ": cannot read its packets");
+    if (p->stream_index != in.stream) continue;
+    av_packet_rescale_ts(p.get(), src, time_base);
     missing = missing || p->dts == AV_NOPTS_VALUE;
-    packets.push_back(p);
+    packets.push_back(std::move(p));
   }
   if (!missing) return packets;
   std::vector<std::int64_t> shown;
-  for (const AVPacket* p : packets)
-    if (p->pts != AV_NOPTS_VALUE) shown.push_back(p->pts);
-  if (shown.size() != packets.size()) return packets;  // no way to time them: the muxer will say so
+  for (const Packet& p : packets) {
+    if (p->pts == AV_NOPTS_VALUE) throw InputError(path + ": packets without times; cannot join it");
+    shown.push_back(p->pts);
+  }
   std::sort(shown.begin(), shown.end());
-  std::int64_t delay = 0;
   for (size_t i = 0; i < packets.size(); ++i) delay = std::max(delay, shown[i] - packets[i]->pts);
   for (size_t i = 0; i < packets.size(); ++i) packets[i]->dts = shown[i] - delay;
   return packets;
 }
 
 // The earliest presentation time of a chunk's packets.
-std::int64_t chunk_start(const std::vector<AVPacket*>& packets) {
+std::int64_t chunk_start(const std::vector<Packet>& packets) {
   std::int64_t start = AV_NOPTS_VALUE;
-  for (const AVPacket* p : packets)
+  for (const Packet& p : packets)
     if (p->pts != AV_NOPTS_VALUE && (start == AV_NOPTS_VALUE || p->pts < start)) start = p->pts;
   return start;
 }
@@ -164,34 +170,42 @@ void concat_videos(const std::vector<std::string>& inputs, const std::string& ou
       throw InputError(inputs[k] + ": another codec or frame size than " + inputs[0]);
     } else if (src->codecpar->format != first->format || src->codecpar->color_trc != first->color_trc ||
                src->codecpar->color_primaries != first->color_primaries ||
-               src->codecpar->color_space != first->color_space) {
-      throw InputError(inputs[k] + ": another pixel format or colour (transfer, primaries, matrix) than " +
+               src->codecpar->color_space != first->color_space ||
+               src->codecpar->color_range != first->color_range) {
+      throw InputError(inputs[k] + ": another pixel format or colour (transfer, primaries, matrix, range) than " +
                        inputs[0] + ": the chunks were made with other settings");
+    } else if (src->codecpar->profile != first->profile || src->codecpar->extradata_size != first->extradata_size ||
+               (first->extradata_size > 0 &&
+                std::memcmp(src->codecpar->extradata, first->extradata, size_t(first->extradata_size)) != 0)) {
+      // The joined file keeps the first chunk's codec headers: another
+      // encoder setting (--quality, --crf) would decode as corrupt video.
+      throw InputError(inputs[k] + ": encoded with other settings than " + inputs[0] +
+                       " (its codec headers differ): make every chunk with the same options");
     }
-    std::vector<AVPacket*> chunk = chunk_packets(*in, stream->time_base);
-    struct Freer {
-      std::vector<AVPacket*>& p;
-      ~Freer() {
-        for (AVPacket*& q : p) av_packet_free(&q);
-      }
-    } freer{chunk};
+    // One frame in the output's time base, and the codec's reordering depth.
+    const std::int64_t frame =
+        std::max<std::int64_t>(1, av_rescale_q(1, av_inv_q(src->avg_frame_rate.num > 0 ? src->avg_frame_rate
+                                                                                      : src->r_frame_rate),
+                                               stream->time_base));
+    const std::vector<Packet> chunk =
+        chunk_packets(*in, inputs[k], stream->time_base, std::int64_t(first->video_delay) * frame);
     if (chunk.empty()) throw InputError(inputs[k] + ": holds no frames");
     // A chunk that starts more than a frame and a half after the previous
     // one ended leaves a hole: a chunk is missing (a failed task).
     const std::int64_t first_pts = chunk_start(chunk);
-    if (last_end != AV_NOPTS_VALUE && chunk.front()->duration > 0 &&
-        first_pts - last_end > chunk.front()->duration * 3 / 2)
+    if (last_end != AV_NOPTS_VALUE && first_pts != AV_NOPTS_VALUE && first_pts - last_end > frame * 3 / 2)
       throw InputError(inputs[k] + ": starts " +
                        std::to_string(double(first_pts - last_end) * av_q2d(stream->time_base)) +
                        " s after the previous chunk ends: is a chunk missing between them?");
-    for (AVPacket* p : chunk) {
-      if (last_dts != AV_NOPTS_VALUE && p->dts <= last_dts)
+    for (const Packet& p : chunk) {
+      if (last_dts != AV_NOPTS_VALUE && p->dts != AV_NOPTS_VALUE && p->dts <= last_dts)
         throw InputError(inputs[k] + ": its frames overlap the previous chunk's (are the chunks in order?)");
-      last_dts = p->dts;
-      if (p->pts != AV_NOPTS_VALUE) last_end = std::max(last_end, p->pts + std::max<std::int64_t>(p->duration, 0));
+      if (p->dts != AV_NOPTS_VALUE) last_dts = p->dts;
+      if (p->pts != AV_NOPTS_VALUE)
+        last_end = std::max(last_end, p->pts + (p->duration > 0 ? p->duration : frame));
       p->stream_index = stream->index;
       p->pos = -1;
-      const int rc = av_interleaved_write_frame(out, p);
+      const int rc = av_interleaved_write_frame(out, p.get());
       if (rc < 0) {
         char why[AV_ERROR_MAX_STRING_SIZE] = {0};
         av_strerror(rc, why, sizeof(why));

@@ -1,7 +1,6 @@
 #include "samples/scene_writer.hpp"
 
 #include <filesystem>
-#include <utility>
 #include <opencv2/imgcodecs.hpp>
 
 #include "io/exr_file.hpp"
@@ -19,8 +18,8 @@ void SceneWriter::add_frame(const cv::Mat& rgb, const cv::Mat& target_mask) {
   cv::Mat scaled = rgb * (1.0 / white_);
   io::write_exr(file.temp_path().string(), scaled, io::ExrWriteOptions{true, white_, fps_});
   files_.push_back(std::move(file));
+  masked_.push_back(!target_mask.empty());
   if (target_mask.empty()) return;
-  ++masks_;
   std::vector<unsigned char> png;
   cv::imencode(".png", target_mask, png);
   io::StagedFile mask(io::format_pattern(dir_ + "/target/%05d.png", index));
@@ -34,14 +33,17 @@ void SceneWriter::finish(const std::vector<io::GazeSample>& gaze) {
   files_.clear();
   // A scene written over another: the old one's frames and masks beyond
   // this one's go, so the folder holds one scene.
-  for (const auto& [kind, kept] : {std::pair{"frames", frames_}, std::pair{"target", masks_}}) {
-    const std::filesystem::path folder = std::filesystem::path(dir_) / kind;
+  for (const bool masks : {false, true}) {
+    const std::filesystem::path folder = std::filesystem::path(dir_) / (masks ? "target" : "frames");
     if (!std::filesystem::is_directory(folder)) continue;
     for (const auto& e : std::filesystem::directory_iterator(folder)) {
       const std::string stem = e.path().stem().string();
       const bool numbered =
           stem.size() >= 5 && stem.size() <= 12 && stem.find_first_not_of("0123456789") == std::string::npos;
-      if (numbered && std::stoll(stem) >= kept) std::filesystem::remove(e.path());
+      if (!numbered) continue;
+      const std::int64_t n = std::stoll(stem);
+      const bool written = n < frames_ && (!masks || masked_[size_t(n)]);
+      if (!written) std::filesystem::remove(e.path());
     }
   }
 }

@@ -30,7 +30,7 @@ class SceneWriter {
   double fps_, white_;
   std::vector<io::StagedFile> files_;
   std::int64_t frames_ = 0;
-  std::int64_t masks_ = 0;
+  std::vector<bool> masked_;  // whether frame k came with a mask
 };
 
 }  // namespace eyestream::samples

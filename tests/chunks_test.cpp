@@ -121,7 +121,8 @@ TEST(Chunks, MatroskaChunksJoinAndAMissingOrMismatchedChunkIsRefused) {
     EXPECT_EQ(r.exit_code, 0) << r.output;
     return out;
   };
-  const std::string a = part(0, ""), b = part(1, ""), c = part(2, ""), hdr = part(1, " --hdr10");
+  const std::string a = part(0, ""), b = part(1, ""), c = part(2, ""), hdr = part(1, " --hdr10"),
+                    other_crf = part(1, " --crf 30");
   for (const char* ext : {".mkv", ".mp4"}) {
     const std::string joined = dir / (std::string("all") + ext);
     const auto r = test::run_eyestream("concat -o " + joined + " " + a + " " + b + " " + c);
@@ -136,6 +137,9 @@ TEST(Chunks, MatroskaChunksJoinAndAMissingOrMismatchedChunkIsRefused) {
   EXPECT_NE(r.output.find("is a chunk missing between them?"), std::string::npos) << r.output;
   r = test::run_eyestream("concat -o " + (dir / "mix.mkv") + " " + a + " " + hdr);
   EXPECT_EQ(r.exit_code, 3) << r.output;
+  r = test::run_eyestream("concat -o " + (dir / "crf.mkv") + " " + a + " " + other_crf);
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_NE(r.output.find("its codec headers differ"), std::string::npos) << r.output;
   EXPECT_FALSE(std::filesystem::exists(dir / "mix.mkv"));
 }
 

@@ -136,6 +136,11 @@ TEST(Compare, DiffMapsAreNamedByTheInputsFrameNumbers) {
   ASSERT_EQ(f.exit_code, 0) << f.output;
   EXPECT_TRUE(std::filesystem::exists(dir / "folder/00120.png"));
   EXPECT_FALSE(std::filesystem::exists(dir / "folder/00000.png"));
+  // A numbered folder with a gap is refused as a pattern is, with a hint compare can follow.
+  std::filesystem::remove(dir / "b/00121.png");
+  const auto gap = test::run_eyestream("compare " + (dir / "a") + " " + (dir / "b"));
+  EXPECT_EQ(gap.exit_code, 3) << gap.output;
+  EXPECT_NE(gap.output.find("compare pairs every frame"), std::string::npos) << gap.output;
 }
 
 // Flat colours encoded as BT.709 limited-range 4:2:0 H.264 decode back to

@@ -172,7 +172,7 @@ size_t edit_distance(const std::string& a, const std::string& b) {
 }
 
 // Options a parameter file may not hold: the run's inputs and outputs.
-const char* const kCommandLineOnly[] = {"input", "gaze", "output", "config", "overwrite"};
+const char* const kCommandLineOnly[] = {"input", "gaze", "output", "config"};
 
 // " (did you mean 'x'?)" for the parameter nearest to `key` (underscores
 // read as dashes), when it is within a third of the key's length; "".
