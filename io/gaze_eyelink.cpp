@@ -55,13 +55,14 @@ std::vector<GazeSample> parse_eyelink(const std::string& text, const std::string
         }
       // "MSG time [offset] text": Experiment Builder writes an integer offset
       // when the message was logged after its event, at time - offset.
+      if (!sync_s || *sync_s || o.sync_message.empty() || w.size() < 3) continue;  // "MSG time text" at least
       double t, offset = 0;
       const bool has_offset = w.size() >= 4 && w[2].find_first_not_of("-0123456789") == std::string::npos &&
                               parse_number(w[2], offset);
-      const size_t text_at = line.find(w[has_offset ? 2 : 1], line.find(w[1]) + (has_offset ? w[1].size() : 0)) +
-                             w[has_offset ? 2 : 1].size();
-      if (sync_s && !*sync_s && !o.sync_message.empty() && w.size() >= 3 &&
-          line.find(o.sync_message, text_at) != std::string::npos && parse_number(w[1], t))
+      const std::string& before_text = w[has_offset ? 2 : 1];  // the text starts after this word
+      const size_t text_at =
+          line.find(before_text, line.find(w[1]) + (has_offset ? w[1].size() : 0)) + before_text.size();
+      if (line.find(o.sync_message, text_at) != std::string::npos && parse_number(w[1], t))
         *sync_s = (t - offset) * 1e-3;  // the stimulus onset the user marked
       continue;
     }

@@ -82,6 +82,17 @@ TEST(GazeImport, TobiiTakesTheScreenFromRecordingResolution) {
   EXPECT_NE(read.notes.back().find("1920x1200"), std::string::npos) << read.notes.back();
 }
 
+// A bare "MSG" line (found by the gaze fuzzer, which read past the line's
+// words) is skipped like any other message.
+TEST(GazeImport, EyeLinkBareMessageLinesAreSkipped) {
+  const std::string asc = "** CONVERTED FROM x.EDF\nMSG\nMSG\t1000 DISPLAY_COORDS 0 0 999 499\n"
+                          "START\t1000 \tLEFT\tSAMPLES\n1000\t10.0\t20.0\t100.0\t...\nMSG\nEND\t1001\n";
+  GazeImportOptions o = frame_1000x500();
+  EXPECT_EQ(parse_gaze(asc, "bare.asc", o).size(), 1u);
+  o.sync_message = "GO";
+  EXPECT_THROW(parse_gaze(asc, "bare.asc", o), InputError) << "no MSG holds GO";
+}
+
 // Without DISPLAY_COORDS, the tracker's GAZE_COORDS gives the screen.
 TEST(GazeImport, EyeLinkGazeCoordsGiveTheScreenWithoutDisplayCoords) {
   const std::string asc = "MSG\t1000 GAZE_COORDS 0.00 0.00 1999.00 999.00\nSTART\t1000 \tLEFT\tSAMPLES\n"
