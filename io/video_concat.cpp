@@ -10,6 +10,7 @@ extern "C" {
 #include <cstring>
 #include <memory>
 
+#include "io/av_error.hpp"
 #include "io/error.hpp"
 #include "io/staged_file.hpp"
 
@@ -206,11 +207,7 @@ void concat_videos(const std::vector<std::string>& inputs, const std::string& ou
       p->stream_index = stream->index;
       p->pos = -1;
       const int rc = av_interleaved_write_frame(out, p.get());
-      if (rc < 0) {
-        char why[AV_ERROR_MAX_STRING_SIZE] = {0};
-        av_strerror(rc, why, sizeof(why));
-        throw OutputError(output + ": cannot write " + inputs[k] + "'s packets: " + why);
-      }
+      if (rc < 0) throw OutputError(output + ": cannot write " + inputs[k] + "'s packets: " + av_error_text(rc));
     }
     if (k == 0) first_input = std::move(in);  // keeps `first` valid
   }

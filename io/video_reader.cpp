@@ -12,6 +12,7 @@ extern "C" {
 
 #include <cmath>
 
+#include "io/av_error.hpp"
 #include "io/error.hpp"
 
 namespace eyestream::io {
@@ -20,11 +21,6 @@ namespace {
 
 std::string name_or_unknown(const char* s) { return s ? s : "unknown"; }
 
-std::string av_error_text(int code) {
-  char buf[AV_ERROR_MAX_STRING_SIZE] = {0};
-  av_strerror(code, buf, sizeof(buf));
-  return buf;
-}
 
 // libswscale's YUV->RGB coefficients for the stream's matrix.
 int sws_matrix(AVColorSpace space) {

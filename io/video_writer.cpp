@@ -19,21 +19,12 @@ extern "C" {
 #include <opencv2/core.hpp>
 #include <vector>
 
+#include "io/av_error.hpp"
 #include "io/error.hpp"
 #include "io/staged_file.hpp"
 #include "io/transfer_functions.hpp"
 
 namespace eyestream::io {
-
-namespace {
-
-std::string av_message(int code) {
-  char buf[AV_ERROR_MAX_STRING_SIZE] = {0};
-  av_strerror(code, buf, sizeof(buf));
-  return buf;
-}
-
-}  // namespace
 
 struct VideoWriter::Impl {
   std::optional<StagedFile> file;  // none when writing to standard output
@@ -75,7 +66,7 @@ struct VideoWriter::Impl {
     if (code == AVERROR(EPIPE))  // `eyestream run -o - | head`: not a disk problem
       throw OutputError(name + ": the program reading it closed the pipe (" + std::to_string(frames) +
                         " frames had gone to the encoder)");
-    throw OutputError(name + ": " + what + ": " + av_message(code));
+    throw OutputError(name + ": " + what + ": " + av_error_text(code));
   }
 
   void open(int frame_width, int frame_height) {

@@ -97,6 +97,22 @@ bool container_light_level(const std::string& path, unsigned& max_cll, unsigned&
   return ok;
 }
 
+// CTA-861.3 over decoded frames: the largest of each pixel's largest
+// component (MaxCLL) and the largest frame mean of it (MaxFALL), cd/m^2.
+std::pair<double, double> light_level_of(const std::vector<cv::Mat>& frames) {
+  double cll = 0, fall = 0;
+  for (const cv::Mat& f : frames) {
+    cv::Mat channels[3];
+    cv::split(f, channels);
+    const cv::Mat largest = cv::max(cv::max(channels[0], channels[1]), channels[2]);
+    double m = 0;
+    cv::minMaxLoc(largest, nullptr, &m);
+    cll = std::max(cll, m);
+    fall = std::max(fall, cv::mean(largest)[0]);
+  }
+  return {cll, fall};
+}
+
 double bt2020_luminance(const cv::Vec3f& p) { return 0.2627 * p[0] + 0.6780 * p[1] + 0.0593 * p[2]; }
 double rec709_luminance(const cv::Vec3f& p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }
 
@@ -164,16 +180,7 @@ TEST(ZscaleCrossCheck, Hdr10OutputDecodedByZscaleIsTheLightItMeantWithItsMeasure
   const double fall = std::max(first_mean, (300.0 * (kW * kH - 64) + 800.0 * 64) / (kW * kH));
   EXPECT_NEAR(max_cll, 1000.0, 1.0);
   EXPECT_NEAR(max_fall, fall, 1.0);
-  double decoded_cll = 0, decoded_fall = 0;
-  for (const cv::Mat& f : decoded) {
-    cv::Mat channels[3], largest;
-    cv::split(f, channels);
-    largest = cv::max(cv::max(channels[0], channels[1]), channels[2]);
-    double m = 0;
-    cv::minMaxLoc(largest, nullptr, &m);
-    decoded_cll = std::max(decoded_cll, m);
-    decoded_fall = std::max(decoded_fall, cv::mean(largest)[0]);
-  }
+  const auto [decoded_cll, decoded_fall] = light_level_of(decoded);
   // The decoded frames carry the codec's error (x265 at CRF 0 is not lossless).
   EXPECT_NEAR(max_cll / decoded_cll, 1.0, 0.03) << "zscale's frames give MaxCLL " << decoded_cll;
   EXPECT_NEAR(max_fall / decoded_fall, 1.0, 0.01) << "zscale's frames give MaxFALL " << decoded_fall;
@@ -192,16 +199,7 @@ TEST(ZscaleCrossCheck, TheCommandLinesHdr10LightLevelIsTheDecodedFrames) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   unsigned max_cll = 0, max_fall = 0;
   ASSERT_TRUE(container_light_level(dir / "hdr.mp4", max_cll, max_fall));
-  double decoded_cll = 0, decoded_fall = 0;
-  for (const cv::Mat& f : zscale_decode(dir / "hdr.mp4", dir / "hdr.raw", 160, 90)) {
-    cv::Mat channels[3];
-    cv::split(f, channels);
-    const cv::Mat largest = cv::max(cv::max(channels[0], channels[1]), channels[2]);
-    double m = 0;
-    cv::minMaxLoc(largest, nullptr, &m);
-    decoded_cll = std::max(decoded_cll, m);
-    decoded_fall = std::max(decoded_fall, cv::mean(largest)[0]);
-  }
+  const auto [decoded_cll, decoded_fall] = light_level_of(zscale_decode(dir / "hdr.mp4", dir / "hdr.raw", 160, 90));
   ASSERT_GT(decoded_fall, 0.0);
   std::printf("MaxCLL %u (zscale's frames %.1f), MaxFALL %u (%.2f)\n", max_cll, decoded_cll, max_fall, decoded_fall);
   EXPECT_NEAR(max_fall / decoded_fall, 1.0, 0.03);
