@@ -4,7 +4,7 @@
 #include <string>
 
 #include "io/error.hpp"
-#include "pipeline/run/report_charts.hpp"
+#include "pipeline/report/report_charts.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {

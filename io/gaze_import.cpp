@@ -75,6 +75,17 @@ void keep_recording(DelimitedTable& t, int column, const std::string& choice, co
   t = std::move(kept);
 }
 
+namespace {
+
+// The recording id of a Neon table's first row ("" when it has none).
+std::string neon_recording(const std::string& text) {
+  const DelimitedTable t = parse_delimited(text, ',');
+  const int c = t.column("recording id");
+  return c >= 0 && !t.rows.empty() && c < int(t.rows.front().size()) ? t.rows.front()[size_t(c)] : "";
+}
+
+}  // namespace
+
 std::vector<GazeSample> parse_gaze(const std::string& raw, const std::string& name, const GazeImportOptions& o,
                                    GazeRead* read) {
   const std::string text = plain_text(raw);
@@ -85,6 +96,10 @@ std::vector<GazeSample> parse_gaze(const std::string& raw, const std::string& na
   if (format != GazeFormat::kPupilCore && format != GazeFormat::kNeon && format != GazeFormat::kNeonSurface &&
       o.blinks != "auto" && o.blinks != "none")
     throw UsageError("--gaze-blinks " + o.blinks + ": blinks files go with Pupil Core and Neon exports; " + name +
+                     " is not one");
+  if (format != GazeFormat::kPupilCore && format != GazeFormat::kNeon && format != GazeFormat::kNeonSurface &&
+      o.pupils != "auto" && o.pupils != "none")
+    throw UsageError("--gaze-pupils " + o.pupils + ": pupil files go with Pupil Core and Neon exports; " + name +
                      " is not one");
   if (!o.sync_message.empty() && format != GazeFormat::kEyeLink)
     throw UsageError("--gaze-sync-message: only EyeLink ASC files carry messages (use --gaze-sync)");
@@ -113,6 +128,11 @@ std::vector<GazeSample> parse_gaze(const std::string& raw, const std::string& na
     const size_t n = apply_blinks(plain_text(o.blinks_text), o.blinks_name, o.recording, s);
     notes.push_back(std::to_string(n) + " blinks from " + o.blinks_name);
   }
+  if (pupil_labs && !o.pupils_text.empty()) {
+    const size_t n = apply_pupils(plain_text(o.pupils_text), o.pupils_name, o, neon_recording(text), s, notes);
+    notes.push_back("pupil diameters from " + o.pupils_name + " for " + std::to_string(n) + " of " +
+                    std::to_string(s.size()) + " samples");
+  }
   std::stable_sort(s.begin(), s.end(), [](const GazeSample& a, const GazeSample& b) { return a.t_s < b.t_s; });
   std::vector<GazeSample> unique;
   for (const GazeSample& g : s) {
@@ -138,26 +158,45 @@ std::optional<std::string> read_text(const std::filesystem::path& path) {
 
 }  // namespace
 
+namespace {
+
+// A file a Pupil Player or Neon export keeps beside its gaze: `choice`
+// "auto" reads the first of `names` beside the log that is there, anything
+// but "none" is the file's path or the export's folder (an InputError when
+// nothing can be read; `option` names it).
+void read_companion(const std::string& log, const std::string& choice, const std::vector<std::string>& names,
+                    const std::string& option, std::string& text, std::string& name) {
+  if (!text.empty() || choice == "none") return;
+  const bool beside = choice == "auto";
+  std::vector<std::filesystem::path> candidates;
+  const std::filesystem::path folder = beside ? std::filesystem::path(log).parent_path() : std::filesystem::path(choice);
+  if (beside || std::filesystem::is_directory(folder))  // an export's folder
+    for (const std::string& n : names) candidates.push_back(folder / n);
+  else
+    candidates.push_back(choice);
+  for (const std::filesystem::path& c : candidates) {
+    if (beside && std::filesystem::path(log).filename() == c.filename()) continue;  // the log itself
+    if (const std::optional<std::string> t = read_text(c)) {
+      protect_input(c.string());
+      text = *t;
+      name = c.string();
+      return;
+    }
+  }
+  if (!beside) throw InputError(choice + ": cannot open the file " + option + " names");
+}
+
+}  // namespace
+
 std::vector<GazeSample> read_gaze(const std::string& path, const GazeImportOptions& options, GazeRead* read) {
   const std::optional<std::string> text = read_text(path);
   if (!text) throw InputError(path + ": cannot open gaze log");
   protect_input(path);
   GazeImportOptions o = options;
-  // Pupil Player and Neon export blinks beside the gaze; or a named file.
-  if (o.blinks_text.empty() && o.blinks != "none") {
-    const bool beside = o.blinks == "auto";
-    std::filesystem::path blinks =
-        beside ? std::filesystem::path(path).parent_path() / "blinks.csv" : std::filesystem::path(o.blinks);
-    if (!beside && std::filesystem::is_directory(blinks)) blinks /= "blinks.csv";  // an export's folder
-    const std::optional<std::string> b =
-        beside && std::filesystem::path(path).filename() == "blinks.csv" ? std::nullopt : read_text(blinks);
-    if (!b && !beside) throw InputError(o.blinks + ": cannot open the blinks file (--gaze-blinks)");
-    if (b) {
-      protect_input(blinks.string());
-      o.blinks_text = *b;
-      o.blinks_name = blinks.string();
-    }
-  }
+  read_companion(path, o.blinks, {"blinks.csv"}, "--gaze-blinks", o.blinks_text, o.blinks_name);
+  if (o.want_pupils)
+    read_companion(path, o.pupils, {"pupil_positions.csv", "3d_eye_states.csv"}, "--gaze-pupils", o.pupils_text,
+                   o.pupils_name);
   return parse_gaze(*text, path, o, read);
 }
 

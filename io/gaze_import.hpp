@@ -39,6 +39,13 @@ struct GazeImportOptions {
   std::string blinks = "auto";
   // The blinks read (read_gaze fills these); they close the eye.
   std::string blinks_text, blinks_name;
+  // Pupil Core and Neon pupil diameters, read only when `want_pupils`:
+  // "auto" reads the pupil_positions.csv (Core) or 3d_eye_states.csv
+  // (Neon) beside the export, "none" none, anything else is the path of
+  // one (or the export's folder).
+  std::string pupils = "auto";
+  bool want_pupils = false;
+  std::string pupils_text, pupils_name;  // what read_gaze read
 };
 
 // What a read found beyond the samples: the format, and what it assumed or
@@ -102,5 +109,18 @@ void keep_recording(DelimitedTable& t, int column, const std::string& choice, co
 // (export clock) closed; returns how many blinks it holds.
 size_t apply_blinks(const std::string& text, const std::string& name, const std::string& recording,
                     std::vector<GazeSample>& samples);
+
+// Gives the samples (export clock) the pupil diameter of a Pupil Core
+// pupil_positions.csv (diameter_3d of the 3d model's rows with confidence
+// at least o.min_confidence; eye1 the left eye, eye0 the right) or a Neon
+// 3d_eye_states.csv (pupil diameter left/right [mm]), interpolated
+// linearly between its samples at most 1 s apart, the eyes averaged
+// (o.eye: left, right or average); NaN elsewhere (a blink, low confidence,
+// a diameter outside 1-10 mm: noted), which the gaze timeline bridges. A
+// Neon file holding several recordings is read for o.recording, else
+// gaze_recording (the gaze's own). Returns how many samples got one; a
+// file without rows is an InputError naming it.
+size_t apply_pupils(const std::string& text, const std::string& name, const GazeImportOptions& o,
+                    const std::string& gaze_recording, std::vector<GazeSample>& samples, GazeNotes& notes);
 
 }  // namespace eyestream::io

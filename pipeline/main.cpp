@@ -12,8 +12,8 @@
 #include "io/video_concat.hpp"
 #include "io/staged_file.hpp"
 #include "pipeline/eye/frame_buffer_pool.hpp"
-#include "pipeline/tools/bench_chart.hpp"
-#include "pipeline/tools/bench_command.hpp"
+#include "pipeline/bench/bench_chart.hpp"
+#include "pipeline/bench/bench_command.hpp"
 #include "pipeline/run/chunk_plan.hpp"
 #include "pipeline/tools/command_reference.hpp"
 #include "pipeline/tools/compare_command.hpp"
@@ -23,7 +23,7 @@
 #include "pipeline/settings/parameter.hpp"
 #include "pipeline/tools/psf_command.hpp"
 #include "pipeline/settings/quality_presets.hpp"
-#include "pipeline/run/report_charts.hpp"
+#include "pipeline/report/report_charts.hpp"
 #include "pipeline/run/run.hpp"
 #include "pipeline/settings/settings.hpp"
 #include "samples/scene.hpp"
@@ -208,6 +208,9 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   bench_cmd->add_flag("!--no-skip-study", bench.skip_study,
                       "leave out balanced with and without --no-skip on a dim still frame and on the scene");
+  bench_cmd->add_option("--flare-model", bench.flare_model, "every case's flare lines: drawn or wave (run --help)")
+      ->check(CLI::IsMember({"drawn", "wave"}))
+      ->capture_default_str();
   bench_cmd->add_option("--csv", bench.csv, "write the table as CSV");
   bench_cmd->add_option("--png", bench.png, "draw error against time per frame (PNG)");
   bench_cmd->add_flag("-y,--overwrite", replace_files, "replace the CSV and the chart if they exist");

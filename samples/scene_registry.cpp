@@ -1,5 +1,6 @@
 #include "io/error.hpp"
 #include "samples/adaptation_scene.hpp"
+#include "samples/dappled_sunlight.hpp"
 #include "samples/dusk.hpp"
 #include "samples/flash.hpp"
 #include "samples/headlights.hpp"
@@ -7,6 +8,7 @@
 #include "samples/night_city.hpp"
 #include "samples/night_drive_long.hpp"
 #include "samples/scene.hpp"
+#include "samples/shaped_lamps.hpp"
 
 namespace eyestream::samples {
 
@@ -26,6 +28,16 @@ const std::vector<Scene>& scenes() {
        "signals and two cars' headlights and tail lights, hundreds of lights above a display's peak; the gaze "
        "wanders in fixations and saccades, with a blink",
        kNightCityDuration_s, generate_night_city},
+      {"dappled-sunlight",
+       "looking up into a tree with the sun (--luminance, default 1.6e9 cd/m^2) through 24 gaps among leaves lit "
+       "from behind; each gap's light follows its own 1/f chaos fluctuation and the gaps sway in the wind "
+       "(Matsuda and Ikedo eqs. 9-11): glare that flickers and moves",
+       kDappledSunlightDuration_s, generate_dappled_sunlight},
+      {"shaped-lamps",
+       "lights that are not points and do not stand still, on a dark street: an elongated LED street lamp (1.5 by "
+       "0.08 deg, 2e4 cd/m^2), an amber beacon whose beam sweeps past the eye 1.5 times a second (1e6 cd/m^2 on "
+       "its axis), a cyclist's lamp crossing at 4 deg/s",
+       kShapedLampsDuration_s, generate_shaped_lamps},
       {"flash",
        "a 1/8 s neutral flash (--luminance, default 1e7 cd/m^2) of 2 deg radius on black at 0.5 s, then darkness; "
        "gaze fixed on it: bleaching afterimages and the flight of colours",

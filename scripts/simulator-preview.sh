@@ -5,11 +5,13 @@
 # summary and its charts:
 #   out/night-drive-long/preview.mp4, report.csv, report.json, report.png
 # Assumes the build exists (bash scripts/demo.sh or scripts/build.sh first).
+# EYESTREAM and PREVIEW_DIR name another program or folder (docs/figures.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-dir=out/night-drive-long
-build/eyestream sample -y night-drive-long -o "$dir/scene"
-build/eyestream run -y -i "$dir/scene/frames/%05d.exr" -g "$dir/scene/gaze.csv" -o "$dir/preview.mp4" \
+es=${EYESTREAM:-build/eyestream}
+dir=${PREVIEW_DIR:-out/night-drive-long}
+"$es" sample -y night-drive-long -o "$dir/scene"
+"$es" run -y -i "$dir/scene/frames/%05d.exr" -g "$dir/scene/gaze.csv" -o "$dir/preview.mp4" \
   --viewers 25,75 --gaze-overlay --timecode \
   --report "$dir/report.csv" --target-mask "$dir/scene/target" "$@"
 echo "simulator preview: $dir/preview.mp4; report: $dir/report.csv, report.json, report.png"

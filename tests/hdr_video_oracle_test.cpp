@@ -22,7 +22,7 @@ extern "C" {
 
 #include "io/video_source.hpp"
 #include "io/video_writer.hpp"
-#include "pipeline/run/hdr10_encoding.hpp"
+#include "pipeline/preview/hdr10_encoding.hpp"
 #include "tests/test_support.hpp"
 
 namespace eyestream {

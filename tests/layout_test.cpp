@@ -1,6 +1,6 @@
 // The source tree's floors: io, retina and glare never include each other
-// or pipeline; inside pipeline, geometry < settings < eye < run < tools <
-// api, and a folder includes only its own floor and those below it.
+// or pipeline; inside pipeline, geometry < settings < eye < report < preview <
+// run < bench < tools < api, and a folder includes only its own floor and those below it.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -43,9 +43,10 @@ TEST(Layout, EveryFolderIncludesOnlyItsOwnFloorAndThoseBelow) {
   // Rank by floor; the model's three libraries share rank 0 and may not
   // include one another.
   const std::map<std::string, int> rank = {
-      {"io", 0},          {"retina", 0},      {"glare", 0},       {"samples", 1},        {"pipeline/geometry", 2},
-      {"pipeline/settings", 3}, {"pipeline/eye", 4}, {"pipeline/run", 5}, {"pipeline/tools", 6}, {"pipeline/api", 7},
-      {"pipeline", 8}};
+      {"io", 0},           {"retina", 0},         {"glare", 0},       {"samples", 1},
+      {"pipeline/geometry", 2}, {"pipeline/settings", 3}, {"pipeline/eye", 4}, {"pipeline/report", 5},
+      {"pipeline/preview", 6}, {"pipeline/run", 7},  {"pipeline/bench", 8}, {"pipeline/tools", 9},
+      {"pipeline/api", 10}, {"pipeline", 11}};
   int checked = 0;
   for (const std::string top : {"io", "retina", "glare", "samples", "pipeline"})
     for (const auto& e : fs::recursive_directory_iterator(root / top)) {
@@ -63,6 +64,18 @@ TEST(Layout, EveryFolderIncludesOnlyItsOwnFloorAndThoseBelow) {
       }
     }
   EXPECT_GT(checked, 100) << "the includes were not found";
+}
+
+// A newcomer can take in each of pipeline's folders: none holds more than
+// about 15 source files (17 at most).
+TEST(Layout, NoPipelineFolderHoldsMoreThanAboutFifteenFiles) {
+  for (const auto& folder : fs::directory_iterator(fs::path(EYESTREAM_SOURCE_DIR) / "pipeline")) {
+    if (!folder.is_directory()) continue;
+    int files = 0;
+    for (const auto& e : fs::directory_iterator(folder.path()))
+      files += e.path().extension() == ".cpp" || e.path().extension() == ".hpp";
+    EXPECT_LE(files, 17) << folder.path().filename() << " holds " << files << " source files";
+  }
 }
 
 }  // namespace

@@ -5,10 +5,10 @@
 
 #include <iostream>
 
-#include "pipeline/tools/bench_case.hpp"
-#include "pipeline/tools/bench_scene.hpp"
+#include "pipeline/bench/bench_case.hpp"
+#include "pipeline/bench/bench_scene.hpp"
 #include "pipeline/settings/quality_presets.hpp"
-#include "pipeline/tools/reference_error.hpp"
+#include "pipeline/bench/reference_error.hpp"
 
 namespace eyestream::pipeline {
 namespace {

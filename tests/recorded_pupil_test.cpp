@@ -1,16 +1,18 @@
 // The viewer's own pupil (--pupil-from-gaze): the diameter the eye tracker
-// recorded, read from native logs, Tobii Pro Lab exports and EyeLink ASC
-// files, bridged across a blink, drives the optics; the report shows it
+// recorded, read from native logs, Tobii Pro Lab exports, EyeLink ASC
+// files, Pupil Core and Neon exports, bridged across a blink, drives the optics; the report shows it
 // beside the model's. The expected diameters are computed here from the
 // fixtures' own numbers.
 #include <eyestream/eye.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
 
+#include "io/error.hpp"
 #include "io/exr_file.hpp"
 #include "io/gaze_import.hpp"
 #include "pipeline/eye/gaze_timeline.hpp"
@@ -115,6 +117,107 @@ std::string eyelink_log() {
   return o.str();
 }
 
+// Pupil Core (a Pupil Player export's folder): gaze_positions.csv on the
+// Pupil clock (s), the blink in blinks.csv, and pupil_positions.csv as
+// Pupil Player writes it: each eye at its own times (eye0, the right eye,
+// 2 ms before each gaze sample, eye1 2 ms after), a 2d-detector row
+// (pixels, no diameter_3d) and a 3d-model row per sample, the left eye
+// 0.1 mm larger, confidence 0 during the blink.
+std::vector<std::pair<std::string, std::string>> pupil_core_export() {
+  std::ostringstream gaze, pupils;
+  gaze << "gaze_timestamp,world_index,confidence,norm_pos_x,norm_pos_y,base_data,gaze_point_3d_x\n";
+  pupils << "pupil_timestamp,world_index,eye_id,confidence,norm_pos_x,norm_pos_y,diameter,method,ellipse_center_x,"
+            "ellipse_center_y,ellipse_axis_a,ellipse_axis_b,ellipse_angle,diameter_3d,model_confidence,model_id\n";
+  gaze.precision(10);
+  pupils.precision(10);
+  const int samples = int(std::lround((kEnd - kFirst) / kStep));
+  for (int i = -1; i <= samples; ++i) {  // the eye cameras run a sample longer at each end
+    const double t = sample_time(i), clock = 1.0 + kStep * i;
+    if (i >= 0 && i < samples) gaze << clock << "," << i << "," << (closed_at(t) ? 0.1 : 0.95) << ",0.5,0.5,x,0\n";
+    for (const int eye : {0, 1}) {
+      const double te = t + (eye ? 0.002 : -0.002), confidence = closed_at(te) ? 0.0 : 0.97;
+      const double mm = pupil_at(te) + (eye ? 0.05 : -0.05);
+      pupils << clock + (te - t) << "," << i << "," << eye << "," << confidence << ",0.5,0.5,31.2,2d c++,96,96,30,32,"
+             << "10,9.9,,\n";  // (a diameter_3d the 2d detector's rows must not give)
+      pupils << clock + (te - t) << "," << i << "," << eye << "," << confidence << ",0.5,0.5,31.2,pye3d 0.3.0 "
+             << "real-time,96,96,30,32,10," << (confidence > 0 ? mm : 0.0) << ",0.9,1\n";
+    }
+  }
+  const std::string blinks = "id,start_timestamp,duration,end_timestamp,start_frame_index,index,end_frame_index,"
+                             "confidence,filter_response,base_data\n1,1.1,0.09,1.19,10,15,19,0.8,0.5 0.6,x\n";
+  return {{"gaze_positions.csv", gaze.str()}, {"blinks.csv", blinks}, {"pupil_positions.csv", pupils.str()}};
+}
+
+// Neon (a Pupil Cloud download's folder): gaze.csv with the blink's id, and
+// 3d_eye_states.csv at the gaze's timestamps [ns] with both eyes'
+// diameters (left 0.1 mm larger), still written during the blink.
+std::vector<std::pair<std::string, std::string>> neon_export() {
+  std::ostringstream gaze, eyes;
+  gaze << "section id,recording id,timestamp [ns],gaze x [px],gaze y [px],worn,fixation id,blink id,"
+          "azimuth [deg],elevation [deg]\n";
+  eyes << "section id,recording id,timestamp [ns],pupil diameter left [mm],pupil diameter right [mm],"
+          "eyeball center left x [mm],eyeball center left y [mm],eyeball center left z [mm],"
+          "optical axis left x,optical axis left y,optical axis left z\n";
+  eyes.precision(10);
+  for (int i = 0; sample_time(i) < kEnd; ++i) {
+    const double t = sample_time(i);
+    const long long ns = 1000000000LL + 10000000LL * i;
+    gaze << "s1,rec-a," << ns << ",800,600,1.0,," << (closed_at(t) ? "1" : "") << ",0,0\n";
+    eyes << "s1,rec-a," << ns << "," << pupil_at(t) + 0.05 << "," << pupil_at(t) - 0.05 << ",30,10,-40,0,0,1\n";
+  }
+  return {{"gaze.csv", gaze.str()}, {"3d_eye_states.csv", eyes.str()}};
+}
+
+TEST(RecordedPupil, PupilLabsFilesAverageTheEyesAndSkipTheDetectorsRows) {
+  io::GazeImportOptions o;
+  o.frame_width = 120;
+  o.frame_height = 60;
+  o.sync_clock = 0.995;
+  for (const auto& files : {pupil_core_export(), neon_export()}) {
+    io::GazeImportOptions with = o;
+    with.pupils_text = files.back().second;
+    with.pupils_name = files.back().first;
+    io::GazeRead read;
+    const std::vector<io::GazeSample> s = io::parse_gaze(files.front().second, files.front().first, with, &read);
+    ASSERT_EQ(s.size(), 50u);
+    for (size_t i = 0; i < s.size(); ++i) {
+      if (!closed_at(sample_time(int(i)))) {
+        EXPECT_NEAR(s[i].pupil_mm, pupil_at(sample_time(int(i))), 1e-9) << files.back().first << " sample " << i;
+      }
+    }
+    EXPECT_NE(read.notes.back().find("pupil diameters from " + files.back().first), std::string::npos);
+    with.eye = "left";
+    EXPECT_NEAR(io::parse_gaze(files.front().second, files.front().first, with).at(40).pupil_mm,
+                pupil_at(sample_time(40)) + 0.05, 1e-9)
+        << "--gaze-eye left";
+  }
+  // An older Neon export's single column; a Pupil Core file without diameter_3d names it.
+  io::GazeImportOptions old = o;
+  old.pupils_text = "section id,recording id,timestamp [ns],pupil diameter [mm]\ns1,rec-a,1000000000,4.25\n";
+  old.pupils_name = "3d_eye_states.csv";
+  EXPECT_NEAR(io::parse_gaze(neon_export().front().second, "gaze.csv", old).at(0).pupil_mm, 4.25, 1e-12);
+  // A download's file holding two recordings: the gaze's own is read.
+  old.pupils_text = "section id,recording id,timestamp [ns],pupil diameter [mm]\ns1,rec-b,1000000000,6.5\n"
+                    "s1,rec-a,1000000000,4.25\n";
+  EXPECT_NEAR(io::parse_gaze(neon_export().front().second, "gaze.csv", old).at(0).pupil_mm, 4.25, 1e-12);
+  // Diameters outside 1-10 mm (the 3d model's outliers) are none, and noted.
+  old.pupils_text = "section id,recording id,timestamp [ns],pupil diameter [mm]\ns1,rec-a,1000000000,1e6\n";
+  io::GazeRead read;
+  EXPECT_TRUE(std::isnan(io::parse_gaze(neon_export().front().second, "gaze.csv", old, &read).at(0).pupil_mm));
+  EXPECT_NE(read.notes.front().find("1 pupil diameters outside 1-10 mm"), std::string::npos) << read.notes.front();
+  old.pupils_text = "section id,recording id,timestamp [ns],pupil diameter [mm]\n";
+  EXPECT_THROW(io::parse_gaze(neon_export().front().second, "gaze.csv", old), InputError) << "no rows";
+  old.pupils_text = "pupil_timestamp,eye_id,confidence,diameter\n1.0,0,1,30\n";
+  old.pupils_name = "pupil_positions.csv";
+  try {
+    io::parse_gaze(pupil_core_export().front().second, "gaze_positions.csv", old);
+    ADD_FAILURE() << "no diameter_3d";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("pupil_positions.csv:1: no column 'diameter_3d'"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(RecordedPupil, TheTimelineAveragesInsideAFrameAndBridgesABlink) {
   std::vector<io::GazeSample> samples;
   for (int i = 0; sample_time(i) < kEnd; ++i) {
@@ -136,13 +239,17 @@ TEST(RecordedPupil, TheTimelineAveragesInsideAFrameAndBridgesABlink) {
 // follows the recorded pupil.
 TEST(RecordedPupil, EachFormatsRecordingDrivesTheOpticsThroughTheCommandLine) {
   test::ScratchDir dir;
+  // Each format's files (the log first, then what lies beside it).
   const struct {
     const char* name;
-    std::string text;
+    std::vector<std::pair<std::string, std::string>> files;
     std::string options;
-  } formats[] = {{"log.csv", native_log(), ""},  // (Tobii exports carry no blinks)
-                 {"export.tsv", tobii_log(), " --gaze-format tobii --gaze-sync 0.995"},
-                 {"rec.asc", eyelink_log(), " --gaze-format eyelink --gaze-sync 0.995 --gaze-pupil-scale 0.01"}};
+  } formats[] = {{"native", {{"log.csv", native_log()}}, ""},  // (Tobii exports carry no blinks)
+                 {"tobii", {{"export.tsv", tobii_log()}}, " --gaze-format tobii --gaze-sync 0.995"},
+                 {"eyelink", {{"rec.asc", eyelink_log()}},
+                  " --gaze-format eyelink --gaze-sync 0.995 --gaze-pupil-scale 0.01"},
+                 {"core", pupil_core_export(), " --gaze-sync 0.995"},
+                 {"neon", neon_export(), " --gaze-sync 0.995"}};
   for (const char* fps : {"30", "60"}) {
     const std::string scene = dir / (std::string("h") + fps);
     ASSERT_EQ(test::run_eyestream("sample headlights -o " + scene + " --width 120 --height 60 --fps " + fps +
@@ -150,8 +257,9 @@ TEST(RecordedPupil, EachFormatsRecordingDrivesTheOpticsThroughTheCommandLine) {
                   .exit_code,
               0);
     for (const auto& f : formats) {
-      const std::string log = dir / f.name;
-      std::ofstream(log, std::ios::binary) << f.text;
+      std::filesystem::create_directories(dir / f.name);
+      for (const auto& [file, text] : f.files) std::ofstream(dir / f.name + "/" + file, std::ios::binary) << text;
+      const std::string log = dir / f.name + "/" + f.files.front().first;
       const std::string report = dir / (std::string(fps) + f.name + ".csv");
       const auto r = test::run_eyestream("run -i " + scene + "/frames -g " + log + f.options + " --pupil-from-gaze -o " +
                                          dir / (std::string(fps) + f.name + ".mp4") + " --report " + report);
@@ -166,7 +274,9 @@ TEST(RecordedPupil, EachFormatsRecordingDrivesTheOpticsThroughTheCommandLine) {
         EXPECT_GT(std::abs(std::stod(rows[n].at("pupil_model_mm")) - expected), 0.05) << "the model differs";
         blink_bridged |= rows[n].at("eye") == "closed";
       }
-      if (std::string(f.name) != "export.tsv") EXPECT_TRUE(blink_bridged) << f.name << ": a frame inside the blink";
+      if (std::string(f.name) != "tobii") {
+        EXPECT_TRUE(blink_bridged) << f.name << ": a frame inside the blink";
+      }
     }
   }
   // The optics follow the recording: in scotopic light (the dusk scene at
@@ -177,7 +287,7 @@ TEST(RecordedPupil, EachFormatsRecordingDrivesTheOpticsThroughTheCommandLine) {
                 .exit_code,
             0);
   for (const bool recorded : {true, false}) {
-    const auto r = test::run_eyestream("run -i " + dir / "d/frames" + " -g " + dir / "log.csv" + " -o " +
+    const auto r = test::run_eyestream("run -i " + dir / "d/frames" + " -g " + dir / "native/log.csv" + " -o " +
                                        dir / (recorded ? "r/%05d.exr" : "m/%05d.exr") + " --report " +
                                        dir / (recorded ? "r.csv" : "m.csv") + (recorded ? " --pupil-from-gaze" : ""));
     ASSERT_EQ(r.exit_code, 0) << r.output;

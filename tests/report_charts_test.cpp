@@ -5,8 +5,8 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "io/error.hpp"
-#include "pipeline/run/report_charts.hpp"
-#include "pipeline/run/report_writer.hpp"
+#include "pipeline/report/report_charts.hpp"
+#include "pipeline/report/report_writer.hpp"
 #include "tests/test_support.hpp"
 
 namespace eyestream {

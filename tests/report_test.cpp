@@ -9,7 +9,7 @@
 
 #include "glare/veiling_luminance.hpp"
 #include "glare/vos_psf.hpp"
-#include "pipeline/run/report_writer.hpp"
+#include "pipeline/report/report_writer.hpp"
 #include "tests/test_support.hpp"
 
 namespace eyestream {

@@ -9,7 +9,7 @@
 #include "glare/psf_weights.hpp"
 #include "glare/pupil.hpp"
 #include "glare/split_convolver.hpp"
-#include "pipeline/tools/bench_scene.hpp"
+#include "pipeline/bench/bench_scene.hpp"
 #include "retina/luminance.hpp"
 
 namespace eyestream::glare {

@@ -68,6 +68,7 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
   // one for this frame, else the model's (which goes on either way).
   const double recorded = plan_.pupil_from_gaze ? first.recorded_pupil_mm : NAN;
   const double optics_pupil = std::isfinite(recorded) ? recorded : *pupil_;
+  if (glare_) glare_->set_moment(frame.time_s, first.x, first.y);
   const cv::Mat retinal =
       glare_ ? glare_->apply(scene, optics_log, surround, optics_pupil, &active.glare, &active.glare_reused) : scene;
   times.glare_ms = lap_ms(clock);

@@ -48,6 +48,7 @@ GlareStage::GlareStage(const Plan& plan)
       in_frame_.push_back(spread(cv::Mat(plan.height, plan.width, CV_32FC3, cv::Scalar::all(1.0)), {}));
     return;
   }
+  if (plan.glare.wave_lines) wave_ = std::make_unique<glare::WaveLines>(optics_, plan.pixels_per_degree);
   // The full kernels also give the report its veil (veiling_luminance.hpp).
   // On an angle plane the engines spread only the light that leaves its
   // pixel (their kernels' centre pixel 0); the rest stays on the frame's
@@ -190,6 +191,13 @@ void GlareStage::Cache::keep(const cv::Mat& rgb, const glare::PsfWeights& w, dou
   retinal = out;
 }
 
+cv::Mat GlareStage::with_wave_lines(const cv::Mat& light, const glare::PsfWeights& w, double pupil_mm,
+                                    const cv::Mat& retinal) {
+  if (!wave_) return retinal;
+  cv::Mat out = retinal.clone();  // (the cache keeps the smooth glare)
+  return wave_->add(light, w, pupil_mm, moment_.time_s, moment_.gaze, out) ? out : retinal;
+}
+
 cv::Mat GlareStage::apply(const cv::Mat& rgb, double adaptation_log, double surround, double pupil_mm,
                           bool* ran, bool* reused) {
   if (reused) *reused = false;
@@ -199,6 +207,7 @@ cv::Mat GlareStage::apply(const cv::Mat& rgb, double adaptation_log, double surr
   const double a = std::round(adaptation_log * 1e4) / 1e4;
   const glare::PsfWeights w =
       pupil_mm > 0.0 ? optics_.weights(a, std::round(pupil_mm * 1e3) / 1e3) : optics_.weights(a);
+  if (wave_ && !(pupil_mm > 0.0)) pupil_mm = optics_.pupil_mm(a);  // the lines follow the pupil
   if (plan_.glare.full) {
     // A uniform field (and surround) comes back as it is, within
     // kUniformTolerance; a frame and optics equal to the last ones give the
@@ -211,13 +220,13 @@ cv::Mat GlareStage::apply(const cv::Mat& rgb, double adaptation_log, double surr
     if (plan_.skip && cache_.matches(rgb, w, surround)) {
       if (ran) *ran = false;
       if (reused) *reused = true;
-      return cache_.retinal;
+      return with_wave_lines(rgb, w, pupil_mm, cache_.retinal);
     }
     if (ran) *ran = true;
     cv::Mat out = spread(rgb, w);
     add_surround(out, w, surround);
     if (plan_.skip) cache_.keep(rgb, w, surround, out);
-    return out;
+    return with_wave_lines(rgb, w, pupil_mm, out);
   }
   // The excess over the display peak, with the pixel's colour (Spencer et
   // al. 1995 sec. 3.2; Yoshida et al. 2008): dL = max(L - L_dmax, 0),
@@ -243,7 +252,7 @@ cv::Mat GlareStage::apply(const cv::Mat& rgb, double adaptation_log, double surr
   if (ran) *ran = any;
   if (!any && plan_.skip) return rgb;
   if (ran) *ran = true;
-  return kept + spread(excess, w);
+  return with_wave_lines(excess, w, pupil_mm, kept + spread(excess, w));
 }
 
 }  // namespace eyestream::pipeline

@@ -8,6 +8,7 @@
 
 #include "glare/fft_convolver.hpp"
 #include "glare/split_convolver.hpp"
+#include "glare/wave_lines.hpp"
 #include "glare/psf_kernel.hpp"
 #include "pipeline/settings/plan.hpp"
 
@@ -30,6 +31,10 @@ class GlareStage {
   // result; *ran is false then (and *reused true for the reuse).
   cv::Mat apply(const cv::Mat& rgb, double adaptation_log, double surround_cd_m2, double pupil_mm = 0.0,
                 bool* ran = nullptr, bool* reused = nullptr);
+
+  // The frame's moment for the wave-optics lines (--flare-model wave): its
+  // time and the gaze (frame pixels). Set before apply().
+  void set_moment(double time_s, double gaze_x, double gaze_y) { moment_ = {time_s, {gaze_x, gaze_y}}; }
 
   // The error bound of skipping a uniform field (relative).
   static constexpr double kUniformTolerance = 1e-3;
@@ -60,8 +65,17 @@ class GlareStage {
   // M(x) the share of the PSF at x that falls inside the frame.
   void add_surround(cv::Mat& retinal, const glare::PsfWeights& w, double surround_cd_m2) const;
 
+  // The wave-optics lines of `light` (what the engine spread) added to a
+  // copy of `retinal`, when the plan asks for them.
+  cv::Mat with_wave_lines(const cv::Mat& light, const glare::PsfWeights& w, double pupil_mm, const cv::Mat& retinal);
+
   const Plan plan_;
   const glare::EyeOptics optics_;
+  std::unique_ptr<glare::WaveLines> wave_;
+  struct {
+    double time_s = 0.0;
+    cv::Point2d gaze;
+  } moment_;
   // The frame halved each way (area mean) before the splat to the plane,
   // or empty: a plane at half the frame's px/deg or less receives about
   // one frame pixel in four per plane pixel, and a 2x2 mean carries the

@@ -26,9 +26,9 @@
 #include "pipeline/run/checkpoint.hpp"
 #include "pipeline/eye/gaze_timeline.hpp"
 #include "pipeline/run/interrupts.hpp"
-#include "pipeline/run/preview_renderer.hpp"
+#include "pipeline/preview/preview_renderer.hpp"
 #include "pipeline/run/progress.hpp"
-#include "pipeline/run/report_writer.hpp"
+#include "pipeline/report/report_writer.hpp"
 #include "pipeline/run/run_inputs.hpp"
 #include "pipeline/eye/target_region.hpp"
 
@@ -67,6 +67,8 @@ LoadedGaze load_gaze(const Settings& s, const io::SourceInfo& info) {
   LoadedGaze g;
   if (s.gaze.empty() && s.pupil_from_gaze)
     throw UsageError("--pupil-from-gaze needs a gaze log with pupil diameters (-g)");
+  if (s.gaze_pupils != "auto" && s.gaze_pupils != "none" && !s.pupil_from_gaze)
+    throw UsageError("--gaze-pupils " + s.gaze_pupils + " reads pupils for --pupil-from-gaze, which is not set");
   if (s.gaze.empty()) return g;
   const io::GazeImportOptions o = gaze_import_options(s, info);
   io::GazeRead read;
@@ -79,7 +81,12 @@ LoadedGaze load_gaze(const Settings& s, const io::SourceInfo& info) {
     throw InputError(s.gaze + ": --pupil-from-gaze: the log records no pupil diameter" +
                      std::string(read.format == io::GazeFormat::kEyeLink
                                      ? " (EyeLink: give millimetres per pupil unit with --gaze-pupil-scale)"
-                                     : " (native logs: a pupil_mm column; Tobii: Pupil diameter left/right)"));
+                                     : read.format == io::GazeFormat::kTobii
+                                     ? " (Tobii: Pupil diameter left/right)"
+                                     : read.format == io::GazeFormat::kNative
+                                     ? " (native logs: a pupil_mm column)"
+                                     : " (Pupil Core: pupil_positions.csv, Neon: 3d_eye_states.csv, beside the "
+                                       "export or named with --gaze-pupils)"));
   return g;
 }
 

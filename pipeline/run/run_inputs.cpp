@@ -25,6 +25,8 @@ io::GazeImportOptions gaze_import_options(const Settings& s, const io::SourceInf
   o.sync_message = s.gaze_sync_message;
   o.recording = s.gaze_recording;
   o.blinks = s.gaze_blinks;
+  o.pupils = s.gaze_pupils;
+  o.want_pupils = s.pupil_from_gaze;
   o.eye = s.gaze_eye;
   o.pupil_scale_mm = s.gaze_pupil_scale_mm;
   return o;

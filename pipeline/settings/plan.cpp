@@ -52,7 +52,10 @@ Plan compile_plan(const Settings& s, const io::SourceInfo& source) {
   p.glare.plane_scale = std::clamp(std::max(s.glare_resolution, kLeastPlanePpd / p.pixels_per_degree), 0.0, 1.0);
   p.glare.display_peak_cd_m2 = s.display_peak_cd_m2;
   p.glare.model = s.psf_model == "cie" ? glare::PsfModel::cie : glare::PsfModel::vos;
-  p.glare.flare_lines = s.flare_lines;
+  if (s.flare_model == "wave" && s.psf_model == "gaussian")
+    throw UsageError("--flare-model wave lays its lines over an eye's PSF (--psf-model vos or cie), not the Gaussian");
+  p.glare.wave_lines = s.flare_lines && s.flare_model == "wave";
+  p.glare.flare_lines = s.flare_lines && !p.glare.wave_lines;
   if (s.lens_yellowing) {
     p.lens_filter = glare::lens_filter_rgb(s.viewer.age_years);
     // A surround given in cd/m^2 reaches the retina through the same lens
@@ -83,7 +86,7 @@ std::string describe_glare(const GlarePlan& g) {
     o << ", Gaussian kernel (sigma " << g.gaussian_sigma_deg << " deg)";
   } else {
     o << (g.model == glare::PsfModel::cie ? ", CIE 146 scatter with Vos core and halo" : ", Vos PSF")
-      << (g.flare_lines ? " with flare lines" : "");
+      << (g.flare_lines ? " with flare lines" : g.wave_lines ? " with wave-optics flare lines" : "");
     if (g.tail_factor > 1)
       o << ", split engine (tail at 1/" << g.tail_factor << " resolution)";
     else

@@ -41,6 +41,7 @@ struct GlarePlan {
   bool gaussian = false;             // Yoshida et al. 2008's cheap kernel instead of the eye's PSF
   glare::PsfModel model = glare::PsfModel::vos;
   bool flare_lines = true;
+  bool wave_lines = false;           // the lines by wave optics, frame by frame (flare_lines then off in the kernels)
   int tail_factor = 1;               // Vos PSF: 1 exact FFT engine; >= 2 split engine, tail reduced this much
   double plane_scale = 1.0;          // the convolution's px/deg over the frame's at its centre
   double gaussian_sigma_deg = 0.34;  // Yoshida et al. 2008

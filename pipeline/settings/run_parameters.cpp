@@ -39,6 +39,10 @@ ParamSet run_parameters(Settings& s) {
                "Pupil Core, Neon: auto reads the blinks.csv beside the export, none reads no blinks, or the path of "
                "a blinks file",
                in, &s.gaze_blinks));
+  set.add(text("gaze-pupils",
+               "Pupil Core, Neon, with --pupil-from-gaze: auto reads the pupil_positions.csv or 3d_eye_states.csv "
+               "beside the export, none reads none, or the path of one",
+               in, &s.gaze_pupils));
   set.add(number("gaze-pupil-scale", "mm",
                  "EyeLink: millimetres per unit of pupil diameter, or per square root of a unit of pupil area "
                  "(PUPIL AREA files, EyeLink's default); 0: the pupil is not read",
@@ -50,7 +54,7 @@ ParamSet run_parameters(Settings& s) {
                  &s.gaze_sync_s, -1e12, 1e12));
   set.add(text("gaze-sync-message", "EyeLink: the first MSG line holding this text (a stimulus onset) is the first frame",
                in, &s.gaze_sync_message));
-  set.add(number("gaze-confidence", "", "Pupil Core samples below this confidence count as lost", in,
+  set.add(number("gaze-confidence", "", "Pupil Core gaze samples below this confidence count as lost, and pupil samples as missing", in,
                  &s.gaze_confidence, 0, 1));
   set.add(number("gaze-source-width", "px", "width of the export's scene camera or screen; 0: the format's own", in,
                  &s.gaze_source_width, 0, 100000));
@@ -93,6 +97,11 @@ ParamSet run_parameters(Settings& s) {
                  optics, &s.psf_model, {"vos", "cie", "gaussian"}));
   set.add(flag("flare-lines", "fine radial streaks in the corona and the halo, fixed per --viewer-seed", optics,
                &s.flare_lines));
+  set.add(choice("flare-model",
+                 "the flare lines: drawn (a fixed pattern per viewer) or wave (the diffraction of the viewer's pupil, "
+                 "lens fibres and particles, after Ritschel et al. 2009: they follow the pupil with its hippus, the "
+                 "light's direction and the drifting vitreous, for lights 40 times their surround)",
+                 optics, &s.flare_model, {"drawn", "wave"}));
   set.add(choice("glare-engine",
                  "Vos PSF convolution: exact (full-resolution FFT) or split (sharp centre at full resolution, tail "
                  "reduced by --glare-tail-factor)",

@@ -32,6 +32,7 @@ struct Settings {
   std::optional<double> gaze_sync_s;
   std::string gaze_sync_message;  // EyeLink: the first MSG holding this text is frame 0
   std::string gaze_blinks = "auto";  // Pupil Core, Neon: auto (beside the export), none, or a path
+  std::string gaze_pupils = "auto";  // Pupil Core, Neon pupil files: auto (beside the export), none, or a path
   std::string gaze_recording;     // Neon, Tobii: the recording to read of several
   std::string gaze_eye = "average";  // EyeLink binocular: left, right or average
   double gaze_confidence = 0.6;
@@ -62,6 +63,7 @@ struct Settings {
   glare::PupilDynamics pupil_dynamics;
   std::string pupil_model = "moon-spencer";  // or watson-yellott (glare/pupil.hpp)
   bool flare_lines = true;            // radial streaks of corona and halo (glare/flare_lines.hpp)
+  std::string flare_model = "drawn";  // drawn (fixed per viewer) or wave (glare/wave_lines.hpp)
   bool lens_yellowing = false;        // the lens's density by age (glare/lens_density.hpp)
   bool pupil_from_gaze = false;       // the recorded pupil drives the optics
   double gaze_pupil_scale_mm = 0.0;   // EyeLink: mm per unit of its pupil column

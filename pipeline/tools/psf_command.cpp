@@ -2,11 +2,13 @@
 
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <sstream>
 
 #include "glare/psf_kernel.hpp"
+#include "glare/wave_lines.hpp"
 #include "io/error.hpp"
 #include "io/exr_file.hpp"
 #include "io/png_file.hpp"
@@ -50,9 +52,19 @@ ViewerPsf viewer_psf(const Settings& s, int width, int height, double adaptation
   } else {
     const glare::ComponentKernels k = glare::build_component_kernels(width, height, ppd, optics);
     const glare::PsfWeights w = optics.weights(adaptation_log);
+    // With wave-optics lines: their pattern for this pupil, the light on
+    // the eye's axis, at time 0 (no hippus).
+    std::optional<glare::WavePattern> wave;
+    if (plan.glare.wave_lines) {
+      glare::WaveState state;
+      state.pupil_mm = psf.summary.pupil_mm;
+      wave = glare::wave_pattern(glare::viewer_aperture(plan.glare.viewer.seed), state, ppd,
+                                 int(glare::kWavePatternReach_deg * ppd));
+    }
     for (int c = 0; c < 3; ++c) {
-      cv::Mat kc;
-      glare::combined_kernel(k, w, c).convertTo(kc, CV_32F);
+      cv::Mat kc = glare::combined_kernel(k, w, c);
+      if (wave) kc = k.core * w.core + glare::with_wave_lines(glare::line_part(k, w, c), *wave, c, plan.glare.viewer.haze);
+      kc.convertTo(kc, CV_32F);
       channels.push_back(kc);
     }
   }

@@ -1,4 +1,4 @@
-#include "pipeline/tools/bench_chart.hpp"
+#include "pipeline/bench/bench_chart.hpp"
 
 #include <cmath>
 #include <map>

@@ -1,4 +1,4 @@
-#include "pipeline/tools/bench_scene.hpp"
+#include "pipeline/bench/bench_scene.hpp"
 
 #include <filesystem>
 #include <unistd.h>

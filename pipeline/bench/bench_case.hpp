@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "pipeline/tools/bench_scene.hpp"
+#include "pipeline/bench/bench_scene.hpp"
 #include "pipeline/settings/settings.hpp"
 #include "pipeline/eye/stage_activity.hpp"
 

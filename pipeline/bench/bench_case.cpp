@@ -1,7 +1,7 @@
-#include "pipeline/tools/bench_case.hpp"
+#include "pipeline/bench/bench_case.hpp"
 
 #include "pipeline/eye/eye_simulator.hpp"
-#include "pipeline/run/peak_memory.hpp"
+#include "pipeline/bench/peak_memory.hpp"
 #include "retina/display_encoding.hpp"
 
 namespace eyestream::pipeline {

@@ -1,4 +1,4 @@
-#include "pipeline/run/peak_memory.hpp"
+#include "pipeline/bench/peak_memory.hpp"
 
 #include <fstream>
 #include <string>

@@ -1,4 +1,4 @@
-#include "pipeline/run/report_writer.hpp"
+#include "pipeline/report/report_writer.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 #include "glare/veiling_luminance.hpp"
 #include "io/error.hpp"
 #include "io/staged_file.hpp"
-#include "pipeline/run/report_charts.hpp"
+#include "pipeline/report/report_charts.hpp"
 #include "pipeline/eye/target_region.hpp"
 
 namespace eyestream::pipeline {

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/tools/bench_case.hpp"
-#include "pipeline/tools/reference_error.hpp"
+#include "pipeline/bench/bench_case.hpp"
+#include "pipeline/bench/reference_error.hpp"
 
 namespace eyestream::pipeline {
 
@@ -18,6 +18,7 @@ struct BenchRequest {
   bool skip_study = true;  // balanced with and without skipping, on a dim still frame and on the scene
   std::string csv, png;    // where the table and the chart go ("": not written)
   bool quiet = false;      // no line per case on stderr
+  std::string flare_model = "drawn";  // every case's --flare-model
 };
 
 struct BenchRow {

@@ -1,6 +1,6 @@
-#include "pipeline/run/preview_renderer.hpp"
+#include "pipeline/preview/preview_renderer.hpp"
 
-#include "pipeline/run/hdr10_encoding.hpp"
+#include "pipeline/preview/hdr10_encoding.hpp"
 #include "retina/display_encoding.hpp"
 
 namespace eyestream::pipeline {

@@ -1,4 +1,4 @@
-#include "pipeline/run/viewer_panels.hpp"
+#include "pipeline/preview/viewer_panels.hpp"
 
 #include <cmath>
 #include <cstdlib>

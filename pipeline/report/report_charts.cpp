@@ -1,4 +1,4 @@
-#include "pipeline/run/report_charts.hpp"
+#include "pipeline/report/report_charts.hpp"
 
 #include <algorithm>
 #include <cmath>

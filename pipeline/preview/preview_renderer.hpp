@@ -9,8 +9,8 @@
 #include "io/frame_sink.hpp"
 #include "io/frame_source.hpp"
 #include "pipeline/eye/eye_simulator.hpp"
-#include "pipeline/run/preview.hpp"
-#include "pipeline/run/viewer_panels.hpp"
+#include "pipeline/preview/preview.hpp"
+#include "pipeline/preview/viewer_panels.hpp"
 
 namespace eyestream::pipeline {
 

@@ -1,4 +1,4 @@
-#include "pipeline/run/preview.hpp"
+#include "pipeline/preview/preview.hpp"
 
 #include <algorithm>
 #include <cstdio>

@@ -1,4 +1,4 @@
-#include "pipeline/tools/bench_command.hpp"
+#include "pipeline/bench/bench_command.hpp"
 
 #include <cstdio>
 #include <optional>
@@ -21,10 +21,11 @@ std::vector<std::string> split(const std::string& text) {
   return out;
 }
 
-Settings preset_settings(const std::string& preset, bool skip) {
+Settings preset_settings(const std::string& preset, bool skip, const std::string& flare_model = "drawn") {
   Settings s;
   apply_quality_preset(preset, s);
   s.skip = skip;
+  s.flare_model = flare_model;
   return s;
 }
 
@@ -40,10 +41,11 @@ BenchRow row_of(const std::string& scene, const std::string& size, const std::st
 
 // Each preset on `scene` against the reference (run first if asked for).
 void presets_on(const BenchScene& scene, const std::string& size, const std::vector<std::string>& presets,
-                bool quiet, std::vector<BenchRow>& rows) {
+                const BenchRequest& q, std::vector<BenchRow>& rows) {
+  const bool quiet = q.quiet;
   std::optional<BenchCase> reference;
   for (const std::string& p : presets) {
-    BenchCase c = run_bench_case(scene, preset_settings(p, true));
+    BenchCase c = run_bench_case(scene, preset_settings(p, true, q.flare_model));
     ReferenceError e;
     if (p == "reference") reference = c;
     if (reference && p != "reference") e = error_against(*reference, c);
@@ -55,9 +57,10 @@ void presets_on(const BenchScene& scene, const std::string& size, const std::vec
 
 // Balanced with and without skipping: the cost of a frame that needs
 // little against one that needs everything, and what skipping changes.
-void skip_study(const BenchScene& scene, const std::string& size, bool quiet, std::vector<BenchRow>& rows) {
-  const BenchCase off = run_bench_case(scene, preset_settings("balanced", false));
-  BenchCase on = run_bench_case(scene, preset_settings("balanced", true));
+void skip_study(const BenchScene& scene, const std::string& size, const BenchRequest& q, std::vector<BenchRow>& rows) {
+  const bool quiet = q.quiet;
+  const BenchCase off = run_bench_case(scene, preset_settings("balanced", false, q.flare_model));
+  BenchCase on = run_bench_case(scene, preset_settings("balanced", true, q.flare_model));
   const ReferenceError e = error_against(off, on);
   rows.push_back(row_of(scene.name, size, "balanced", false, off, quiet));
   rows.push_back(row_of(scene.name, size, "balanced", true, std::move(on), quiet));
@@ -86,6 +89,8 @@ cv::Size parse_frame_size(const std::string& text) {
 
 std::vector<BenchRow> run_bench(const BenchRequest& q) {
   if (q.frames < 2) throw UsageError("--frames must be at least 2");
+  if (q.flare_model != "drawn" && q.flare_model != "wave")
+    throw UsageError("--flare-model must be drawn or wave, not '" + q.flare_model + "'");
   const std::vector<std::string> sizes = split(q.sizes), presets = split(q.presets);
   if (sizes.empty() || presets.empty()) throw UsageError("--sizes and --presets need at least one entry");
   for (const std::string& p : presets) preset_settings(p, true);  // names checked before any work
@@ -97,7 +102,7 @@ std::vector<BenchRow> run_bench(const BenchRequest& q) {
   for (const std::string& name : scenes)
     for (const std::string& size : sizes) {
       const cv::Size wh = parse_frame_size(size);
-      presets_on(load_bench_scene(name, wh.width, wh.height, q.frames), size, presets, q.quiet, rows);
+      presets_on(load_bench_scene(name, wh.width, wh.height, q.frames), size, presets, q, rows);
     }
   for (const std::string& size : sizes) {
     const cv::Size wh = parse_frame_size(size);
@@ -106,8 +111,8 @@ std::vector<BenchRow> run_bench(const BenchRequest& q) {
       // A dim still frame: the headlights scene with its lamps at half the
       // display peak, so nothing needs glare and the retina rests.
       const BenchScene dim = load_bench_scene("headlights", wh.width, wh.height, q.frames, 50.0);
-      skip_study(dim, size, q.quiet, rows);
-      skip_study(scene, size, q.quiet, rows);
+      skip_study(dim, size, q, rows);
+      skip_study(scene, size, q, rows);
     }
   }
   return rows;

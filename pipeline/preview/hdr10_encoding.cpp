@@ -1,4 +1,4 @@
-#include "pipeline/run/hdr10_encoding.hpp"
+#include "pipeline/preview/hdr10_encoding.hpp"
 
 #include <cmath>
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/tools/bench_command.hpp"
+#include "pipeline/bench/bench_command.hpp"
 
 namespace eyestream::pipeline {
 

@@ -1,4 +1,4 @@
-#include "pipeline/tools/reference_error.hpp"
+#include "pipeline/bench/reference_error.hpp"
 
 #include <opencv2/imgproc.hpp>
 

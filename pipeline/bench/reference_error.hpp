@@ -3,7 +3,7 @@
 // `eyestream bench` and the error-bound tests of the quality presets.
 #pragma once
 
-#include "pipeline/tools/bench_case.hpp"
+#include "pipeline/bench/bench_case.hpp"
 
 namespace eyestream::pipeline {
 

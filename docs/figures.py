@@ -1,0 +1,158 @@
+"""The quoted figures of the docs against what their commands printed
+(docs/figures.sh runs the commands; this reads docs/figures.map).
+
+    python3 docs/figures.py check VALUES    exit 1 when a quoted figure is off or its sentence is gone
+    python3 docs/figures.py update VALUES   rewrite the quoted figures in place, keeping their decimals
+
+VALUES holds "key value" lines. The bench's figures come from the committed
+docs/bench.csv: bench.SCENE.SIZE.PRESET.{ms,fps,p99,speedup} (speedup: the
+reference's time over the preset's), and the bench table quoted in
+docs/performance.md is checked row by row against that file.
+"""
+import csv
+import re
+import sys
+
+NUMBER = r"(-?[0-9]+(?:\.[0-9]+)?)"
+
+
+def bench_values(path="docs/bench.csv"):
+    rows = list(csv.DictReader(open(path)))
+    values, reference = {}, {}
+    for r in rows:
+        if r["skip"] == "on" and r["preset"] == "reference":
+            reference[(r["scene"], r["size"])] = float(r["filter_ms"])
+    for r in rows:
+        if r["skip"] != "on" or r["against"] != "reference":
+            continue
+        key = f"bench.{r['scene']}.{r['size']}.{r['preset']}"
+        values[key + ".ms"] = float(r["filter_ms"])
+        values[key + ".fps"] = float(r["fps"])
+        values[key + ".p99"] = float(r["de2000_p99"])
+        values[key + ".speedup"] = reference[(r["scene"], r["size"])] / float(r["filter_ms"])
+    return rows, values
+
+
+def read_map(path="docs/figures.map"):
+    """Lines: FILE | sentence with {} for each number | key, key | tolerance
+    (a number, a percentage, or "timing": read, rewritten, never judged)."""
+    entries = []
+    for n, line in enumerate(open(path), 1):
+        line = line.strip()
+        if not line or line.startswith("#"):
+            continue
+        parts = [p.strip() for p in line.split(" | ")]
+        if len(parts) != 4:
+            sys.exit(f"docs/figures.map:{n}: needs FILE | sentence | keys | tolerance")
+        keys = [k.strip() for k in parts[2].split(",")]
+        if parts[1].count("{}") != len(keys):
+            sys.exit(f"docs/figures.map:{n}: {parts[1].count('{}')} numbers but {len(keys)} keys")
+        entries.append((n, parts[0], parts[1], keys, parts[3]))
+    return entries
+
+
+def sentence_regex(sentence):
+    """The sentence as a regular expression: each {} a number, and any run
+    of whitespace any run (the docs break lines anywhere)."""
+    out, chunks = "", sentence.split("{}")
+    for i, chunk in enumerate(chunks):
+        if i:
+            out += NUMBER
+        words = chunk.split()
+        if not words:
+            out += r"\s+" if chunk else ""
+            continue
+        lead = r"\s+" if i and chunk[0].isspace() else ""
+        trail = r"\s+" if i + 1 < len(chunks) and chunk[-1].isspace() else ""
+        out += lead + r"\s+".join(re.escape(w) for w in words) + trail
+    return re.compile(out)
+
+
+def within(quoted, value, tolerance):
+    if tolerance == "timing":
+        return True
+    decimals = len(quoted.split(".")[1]) if "." in quoted else 0
+    rounding = 0.5 * 10 ** -decimals
+    allowed = float(tolerance[:-1]) / 100 * abs(value) if tolerance.endswith("%") else float(tolerance)
+    return abs(float(quoted) - value) <= rounding + allowed + 1e-12
+
+
+def formatted(quoted, value):
+    decimals = len(quoted.split(".")[1]) if "." in quoted else 0
+    return f"{value:.{decimals}f}"
+
+
+def check_bench_table(rows, failures):
+    """The table in performance.md is `eyestream bench`'s output: each row
+    matches the committed CSV's row in order, within its printed rounding."""
+    text = open("docs/performance.md").read()
+    table = re.search(r"```\nscene +size +preset.*?\n(.*?)```", text, re.S)
+    if not table:
+        failures.append("docs/performance.md: the bench's table is gone")
+        return
+    lines = [l.split() for l in table.group(1).strip().splitlines()]
+    columns = ["filter_ms", "fps", "glare_ms", "adaptation_ms", "retina_ms", "mesopic_ms", "afterimage_ms",
+               "encode_ms", "setup_s", "memory_mib", "de2000_p99", "de2000_max", "state_error"]
+    if len(lines) != len(rows):
+        failures.append(f"docs/performance.md: the bench table has {len(lines)} rows, docs/bench.csv {len(rows)}")
+        return
+    for line, row in zip(lines, rows):
+        if line[:4] != [row["scene"], row["size"], row["preset"], row["skip"]]:
+            failures.append(f"docs/performance.md: bench row {' '.join(line[:4])} is not docs/bench.csv's "
+                            f"{row['scene']} {row['size']} {row['preset']} {row['skip']}")
+            continue
+        for quoted, column in zip(line[4:4 + len(columns)], columns):
+            if quoted != "-" and not within(quoted, float(row[column]), "0"):
+                failures.append(f"docs/performance.md: bench row {' '.join(line[:4])}: {column} {quoted}, "
+                                f"docs/bench.csv {row[column]}")
+
+
+def main():
+    if len(sys.argv) != 3 or sys.argv[1] not in ("check", "update"):
+        sys.exit(__doc__)
+    values = {}
+    for line in open(sys.argv[2]):
+        if line.strip():
+            key, value = line.split()
+            values[key] = float(value)
+    rows, bench = bench_values()
+    values.update(bench)
+    failures, checked, texts = [], 0, {}
+    for n, path, sentence, keys, tolerance in read_map():
+        text = texts.setdefault(path, open(path).read())
+        regex = sentence_regex(sentence)
+        matches = list(regex.finditer(text))
+        if not matches:
+            failures.append(f"{path}: the sentence of docs/figures.map:{n} is gone: {sentence}")
+            continue
+        missing = [k for k in keys if k not in values]
+        if missing and tolerance != "timing":  # timings are measured only with --bench
+            failures.append(f"docs/figures.map:{n}: no value {', '.join(missing)} from docs/figures.sh")
+        if missing:
+            continue
+        for m in reversed(matches):  # from the end, so rewriting keeps earlier offsets
+            for i in reversed(range(len(keys))):
+                quoted, value = m.group(i + 1), values[keys[i]]
+                checked += 1
+                if sys.argv[1] == "update":
+                    text = text[:m.start(i + 1)] + formatted(quoted, value) + text[m.end(i + 1):]
+                elif not within(quoted, value, tolerance):
+                    failures.append(f"{path}: {keys[i]} quoted as {quoted}, printed {value:g} "
+                                    f"(tolerance {tolerance}; docs/figures.map:{n})")
+        texts[path] = text
+    if sys.argv[1] == "update":
+        for path, text in texts.items():
+            open(path, "w").write(text)
+        print(f"docs/figures.py: {checked} quoted figures rewritten")
+    else:
+        check_bench_table(rows, failures)
+    for f in failures:
+        print("docs/figures.py: " + f)
+    if failures:
+        sys.exit(1)
+    if sys.argv[1] == "check":
+        print(f"docs/figures.py: {checked} quoted figures and the bench table match what their commands printed")
+
+
+if __name__ == "__main__":
+    main()

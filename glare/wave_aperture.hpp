@@ -1,0 +1,71 @@
+// The eye's aperture as a wave meets it (after Ritschel et al. 2009,
+// "Temporal Glare", Eurographics): the pupil, the lens fibres and the
+// particles of the lens and the vitreous, each a pure function of the
+// viewer's seed. A light seen at an angle alpha from the eye's axis passes
+// a particle at depth z behind the pupil z tan(alpha) off its place, so
+// each light meets its own arrangement; the vitreous particles drift.
+//
+// The elements (this project's choices where the sources give no number):
+//   lens fibres: a weak phase grating of period 10.5 um across the fibres
+//     (the lenticular halo's ring at lambda / p, 3.0 deg at 550 nm; Spencer
+//     et al. 1995 place it at 3 deg at 568 nm), the fibres running
+//     radially, in bands 40 um wide (fibres are laid in growth shells),
+//     each holding a whole number of fibres round its circle, 2 pi r / p
+//     rounded, at its own random angle; peak phase 0.05 rad (weak: its ring is the
+//     same for every pupil and light, the particles' speckle is not);
+//   particles: 120 in the lens (depth 0.5-4 mm, radius 3-8 um) and 60 in
+//     the vitreous (4-16 mm, 5-15 um), opaque, over an 8 mm disc; the
+//     vitreous ones drift at up to 0.02 mm/s.
+// Eyelashes are not modelled.
+#pragma once
+
+#include <cstdint>
+#include <opencv2/core.hpp>
+#include <vector>
+
+namespace eyestream::glare {
+
+struct WaveParticle {
+  double x_mm, y_mm;    // on the pupil plane, seen along the axis, at t = 0
+  double depth_mm;      // behind the pupil
+  double radius_mm;
+  double vx_mm_s, vy_mm_s;  // drift
+};
+
+struct WaveAperture {
+  std::vector<WaveParticle> particles;
+  std::vector<double> band_offsets;  // fibre bands' phase offsets (rad), one per 40 um of radius
+  // The field as drawn (aperture_field): its side, samples per side, and
+  // what does not change from frame to frame (the shrunk disc with its
+  // soft rim and the fibres' phase; CV_64FC2).
+  double side_mm = 0.0;
+  int samples = 0;
+  cv::Mat fixed;
+  static constexpr double kFibrePeriod_mm = 0.0105;
+  static constexpr double kFibreBand_mm = 0.04;
+  double fibre_phase_rad = 0.05;
+};
+
+// The viewer's elements, drawn on samples x samples over side_mm.
+WaveAperture wave_aperture(std::int64_t seed, double side_mm, int samples);
+
+// What the aperture depends on from frame to frame.
+struct WaveState {
+  double pupil_mm = 4.0;
+  double time_s = 0.0;
+  double light_x_deg = 0.0, light_y_deg = 0.0;  // the light's direction from the eye's axis
+};
+
+// The aperture as the wave pattern draws it (wave_pattern.hpp): the
+// aperture's samples x samples field (CV_64FC2) of side side_mm holding the pupil shrunk to a disc of
+// diameter side_mm / 2: the particles' places (and their drift and depth
+// parallax) scaled by that disc's diameter over the pupil's, their sizes
+// and the fibres' period kept, so the particles' diffraction and the
+// fibres' ring keep their true angles while the speckle between them is
+// drawn coarser (wave_pattern.hpp says why). The pupil is apodised by the
+// Stiles-Crawford effect (amplitude 10^(-0.025 r^2), r in mm of the true
+// pupil; Stiles and Crawford 1933, Applegate and Lakshminarayanan 1993)
+// and its rim softened over its last 5 %.
+cv::Mat aperture_field(const WaveAperture& a, const WaveState& s);
+
+}  // namespace eyestream::glare
