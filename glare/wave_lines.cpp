@@ -11,19 +11,21 @@ namespace {
 
 constexpr size_t kScatterAtMost = 400;
 
-struct Light {
-  int x, y;
-  cv::Vec3f rgb;
-  float luminance;
-};
+// The lines are drawn at most at this many px/deg: the pattern's own
+// detail is 0.02 deg bins and 0.04 deg specks, so a finer frame gains
+// nothing but cost (an FFT-sized filter per channel).
+constexpr double kMostPixelsPerDegree = 35.0;
+
+int reduction(double ppd) { return std::max(1, int(std::ceil(ppd / kMostPixelsPerDegree - 1e-9))); }
 
 }  // namespace
 
-WaveLines::WaveLines(const EyeOptics& optics, double ppd)
-    : ppd_(ppd),
+WaveLines::WaveLines(const EyeOptics& optics, double frame_ppd)
+    : factor_(reduction(frame_ppd)),
+      ppd_(frame_ppd / factor_),
       haze_(optics.viewer().haze),
-      radius_(std::max(1, int(kWavePatternReach_deg * ppd))),
-      smooth_(build_component_kernels(radius_ + 1, radius_ + 1, ppd, optics)),
+      radius_(std::max(1, int(kWavePatternReach_deg * ppd_))),
+      smooth_(build_component_kernels(radius_ + 1, radius_ + 1, ppd_, optics)),
       aperture_(viewer_aperture(optics.viewer().seed)),
       hippus_(optics.viewer().seed) {}
 
@@ -66,8 +68,34 @@ cv::Mat with_wave_lines(const cv::Mat& lines, const WavePattern& p, int c, doubl
   return out;
 }
 
-bool WaveLines::add(const cv::Mat& rgb, const PsfWeights& w, double pupil_mm, double time_s, cv::Point2d gaze,
+bool WaveLines::add(const cv::Mat& frame, const PsfWeights& w, double pupil_mm, double time_s, cv::Point2d gaze,
                     cv::Mat& retinal) const {
+  // On a frame reduced to at most kMostPixelsPerDegree (area means: the
+  // same light), the lines brought back by linear interpolation.
+  cv::Mat rgb = frame;
+  if (factor_ > 1)
+    cv::resize(frame, rgb, cv::Size((frame.cols + factor_ - 1) / factor_, (frame.rows + factor_ - 1) / factor_), 0, 0,
+               cv::INTER_AREA);
+  const double sx = double(rgb.cols) / frame.cols, sy = double(rgb.rows) / frame.rows;
+  cv::Mat delta = cv::Mat::zeros(rgb.size(), CV_32FC3);
+  cv::Rect reach;
+  if (!lines(rgb, w, pupil_mm, time_s, {gaze.x * sx, gaze.y * sy}, delta, reach)) return false;
+  cv::Rect out(0, 0, frame.cols, frame.rows);
+  if (factor_ > 1) {
+    cv::resize(delta, delta, frame.size(), 0, 0, cv::INTER_LINEAR);
+    out &= cv::Rect(int(std::floor(reach.x / sx)) - 1, int(std::floor(reach.y / sy)) - 1,
+                    int(std::ceil(reach.width / sx)) + 3, int(std::ceil(reach.height / sy)) + 3);
+  } else {
+    out = reach;
+  }
+  cv::Mat touched = retinal(out);
+  touched += delta(out);
+  cv::max(touched, 0.0f, touched);  // the engines' rounding against the lines' exact sums
+  return true;
+}
+
+bool WaveLines::lines(const cv::Mat& rgb, const PsfWeights& w, double pupil_mm, double time_s, cv::Point2d gaze,
+                      cv::Mat& delta, cv::Rect& reach) const {
   // The lights: luminance at least kContrast times their surround's, the
   // mean over the frame's pixels between the inner and the outer square.
   cv::Mat luminance, inner, outer, count_in, count_out;
@@ -105,12 +133,12 @@ bool WaveLines::add(const cv::Mat& rgb, const PsfWeights& w, double pupil_mm, do
   }
   int x0 = rgb.cols, y0 = rgb.rows, x1 = -1, y1 = -1;
   for (const Light& l : lights) x0 = std::min(x0, l.x), y0 = std::min(y0, l.y), x1 = std::max(x1, l.x), y1 = std::max(y1, l.y);
-  const cv::Rect reach = cv::Rect(x0 - r, y0 - r, x1 - x0 + n, y1 - y0 + n) & cv::Rect(0, 0, rgb.cols, rgb.rows);
+  reach = cv::Rect(x0 - r, y0 - r, x1 - x0 + n, y1 - y0 + n) & cv::Rect(0, 0, rgb.cols, rgb.rows);
   if (lights.size() <= kScatterAtMost) {
     // Row by row, each light in order: the same sums on any thread count.
     cv::parallel_for_(cv::Range(reach.y, reach.y + reach.height), [&](const cv::Range& rows) {
       for (int y = rows.start; y < rows.end; ++y) {
-        cv::Vec3f* out = retinal.ptr<cv::Vec3f>(y);
+        cv::Vec3f* out = delta.ptr<cv::Vec3f>(y);
         for (const Light& l : lights) {
           const int ky = y - l.y + r;
           if (ky < 0 || ky >= n) continue;
@@ -122,21 +150,29 @@ bool WaveLines::add(const cv::Mat& rgb, const PsfWeights& w, double pupil_mm, do
       }
     });
   } else {
-    cv::Mat lit = cv::Mat::zeros(reach.size(), CV_32FC3);
-    for (const Light& l : lights) lit.at<cv::Vec3f>(l.y - reach.y, l.x - reach.x) = l.rgb;
-    std::vector<cv::Mat> channels, spread(3);
-    cv::split(lit, channels);
-    for (int c = 0; c < 3; ++c) {
-      cv::Mat flipped;
-      cv::flip(added[c], flipped, -1);  // filter2D correlates
-      cv::filter2D(channels[c], spread[c], CV_32F, flipped, cv::Point(-1, -1), 0.0, cv::BORDER_CONSTANT);
-    }
+    // By FFT, one channel per task: the lights' box convolved in full
+    // (box + n - 1 each way), the part inside the frame kept.
+    const cv::Size box(x1 - x0 + 1, y1 - y0 + 1), full(box.width + n - 1, box.height + n - 1);
+    const cv::Size size(cv::getOptimalDFTSize(full.width), cv::getOptimalDFTSize(full.height));
+    cv::Mat spread[3];
+    cv::parallel_for_(cv::Range(0, 3), [&](const cv::Range& channels) {
+      for (int c = channels.start; c < channels.end; ++c) {
+        cv::Mat lit = cv::Mat::zeros(size, CV_32F), kernel = cv::Mat::zeros(size, CV_32F);
+        for (const Light& l : lights) lit.at<float>(l.y - y0, l.x - x0) = l.rgb[c];
+        added[c].copyTo(kernel(cv::Rect(0, 0, n, n)));
+        cv::dft(lit, lit, 0, box.height);
+        cv::dft(kernel, kernel, 0, n);
+        cv::mulSpectrums(lit, kernel, lit, 0);
+        cv::dft(lit, lit, cv::DFT_INVERSE | cv::DFT_SCALE, full.height);
+        spread[c] = lit(cv::Rect(0, 0, full.width, full.height));
+      }
+    });
     cv::Mat sum;
-    cv::merge(spread, sum);
-    retinal(reach) += sum;
+    cv::merge(spread, 3, sum);
+    // The full convolution's (0, 0) is the box's corner moved r up and left.
+    const cv::Rect placed(x0 - r, y0 - r, full.width, full.height);
+    delta(reach) += sum(cv::Rect(reach.x - placed.x, reach.y - placed.y, reach.width, reach.height));
   }
-  cv::Mat touched = retinal(reach);
-  cv::max(touched, 0.0f, touched);  // the engines' rounding against the lines' exact sums
   return true;
 }
 

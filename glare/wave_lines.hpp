@@ -19,7 +19,7 @@
 //     light moved along rings, none added, and haze thins the lines by its
 //     share (Matsuda and Ikedo).
 // Lights are scattered one by one when few (up to 400 pixels), else
-// through a filter over their bounding box.
+// convolved by FFT over their bounding box, a channel per task.
 #pragma once
 
 #include <opencv2/core.hpp>
@@ -37,8 +37,10 @@ class WaveLines {
   static constexpr double kContrast = 40.0;
   static constexpr double kSurroundInner_deg = 2.0, kSurroundOuter_deg = 6.0;  // squares' sides
 
-  // optics: the smooth PSF (its flare_lines off); at pixels_per_degree.
-  WaveLines(const EyeOptics& optics, double pixels_per_degree);
+  // optics: the smooth PSF (its flare_lines off); for frames of
+  // frame_pixels_per_degree. Frames finer than 35 px/deg are reduced by a
+  // whole factor to at most that (the pattern's detail is 0.02-0.04 deg).
+  WaveLines(const EyeOptics& optics, double frame_pixels_per_degree);
 
   // Adds the lines of the lights in `rgb` (cd/m^2, CV_32FC3, the light the
   // engine spread) to `retinal` for weights w, the optics' pupil, the
@@ -51,6 +53,15 @@ class WaveLines {
   WaveState state(double pupil_mm, double time_s, double light_x_deg, double light_y_deg) const;
 
  private:
+  // Adds the lines of the lights of rgb to delta (rgb's size) within reach.
+  bool lines(const cv::Mat& rgb, const PsfWeights& w, double pupil_mm, double time_s, cv::Point2d gaze,
+             cv::Mat& delta, cv::Rect& reach) const;
+  struct Light {
+    int x, y;
+    cv::Vec3f rgb;
+    float luminance;
+  };
+  int factor_;
   double ppd_, haze_;
   int radius_;
   ComponentKernels smooth_;  // (2 radius + 1) squared
