@@ -116,6 +116,18 @@ if [ "$bench" = yes ]; then
   done
 fi
 
+# Figures the test suite prints (usage.md, model.md): the presets' error
+# bounds at 256x144 and the wave lines' correlations through the command
+# line, from the tests built beside the program.
+tests="$(dirname "$es")/tests/eyestream_tests"
+[ -x "$tests" ] || { echo "docs/figures.sh: needs $tests (bash scripts/build.sh)" >&2; exit 2; }
+"$tests" --gtest_filter='QualityPresets.EachPresetStaysWithinItsErrorBoundAgainstReference' 2>&1 |
+  sed -n 's/^\([a-z-]*\), \([a-z]*\): p99 CIEDE2000 \([0-9.]*\)$/presets.\1.\2 \3/p' >> "$values"
+"$tests" --gtest_filter='WavePsf.LinesFollowThePupilAndTheLightAndRepeatForTheSameState' 2>&1 |
+  sed -n 's/^correlation: pupil 4.0 to 3.5 mm \([0-9.]*\), light moved 4 deg \([0-9.]*\), one frame later \([0-9.]*\)$/wave.pupil \1\nwave.light \2\nwave.frame \3/p' >> "$values"
+"$tests" --gtest_filter='WaveLinesCli.*' 2>&1 |
+  sed -n 's/^\([0-9]*\) px: lines at 0.5 s, 30 against 60 frames\/s \([0-9.]*\); at 0.5 against 1.5 s \([0-9.]*\)$/wave.\1.rates \2\nwave.\1.second \3/p' >> "$values"
+
 # The bench (performance.md, README): only when asked.
 if [ "$bench" = yes ]; then
   "$es" bench -y --sizes 720p,1080p --frames 8 --csv "$work/bench.csv" --png "$work/pictures/bench.png"
@@ -124,7 +136,7 @@ fi
 
 if [ "$mode" = update ]; then
   cp "$work"/pictures/*.png docs/
-  python3 docs/figures.py update "$values"
+  FIGURES_BENCH=$bench python3 docs/figures.py update "$values"
   echo "docs/figures.sh: pictures and quoted figures regenerated (values in $values)"
 else
   failed=0

@@ -83,8 +83,12 @@ bool WaveLines::add(const cv::Mat& frame, const PsfWeights& w, double pupil_mm, 
   cv::Rect out(0, 0, frame.cols, frame.rows);
   if (factor_ > 1) {
     cv::resize(delta, delta, frame.size(), 0, 0, cv::INTER_LINEAR);
-    out &= cv::Rect(int(std::floor(reach.x / sx)) - 1, int(std::floor(reach.y / sy)) - 1,
-                    int(std::ceil(reach.width / sx)) + 3, int(std::ceil(reach.height / sy)) + 3);
+    // Every frame pixel whose interpolation reads the reach: linear
+    // resizing samples at (j + 0.5) / s - 0.5 of the reduced frame.
+    const auto first = [](int from, double s) { return int(std::floor((from - 0.5) / s - 0.5)); };
+    const auto last = [](int to, double s) { return int(std::ceil((to + 0.5) / s - 0.5)); };
+    const int fx = first(reach.x, sx), fy = first(reach.y, sy);
+    out &= cv::Rect(fx, fy, last(reach.x + reach.width, sx) - fx + 1, last(reach.y + reach.height, sy) - fy + 1);
   } else {
     out = reach;
   }

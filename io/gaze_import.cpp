@@ -58,7 +58,8 @@ void keep_recording(DelimitedTable& t, int column, const std::string& choice, co
   for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
   const bool chosen = std::find(names.begin(), names.end(), choice) != names.end();
   if (!choice.empty() && !chosen)
-    throw InputError(name + ": no recording '" + choice + "' (--gaze-recording); it holds " + list);
+    throw InputError(name + ": no recording '" + choice + "' (--gaze-recording, or the gaze log's own); it holds " +
+                     list);
   if (choice.empty() && names.size() > 1)
     throw InputError(name + ": holds " + std::to_string(names.size()) + " recordings (" + list +
                      "); choose one with --gaze-recording");
@@ -82,6 +83,20 @@ std::string neon_recording(const std::string& text) {
   const DelimitedTable t = parse_delimited(text, ',');
   const int c = t.column("recording id");
   return c >= 0 && !t.rows.empty() && c < int(t.rows.front().size()) ? t.rows.front()[size_t(c)] : "";
+}
+
+// The recording a file beside the log (blinks, pupils) is read for: the
+// one chosen with --gaze-recording, else, when the file holds several,
+// the gaze log's own; "" (the file's only one) otherwise.
+std::string companion_recording(const std::string& companion, const std::string& choice, const std::string& log) {
+  if (!choice.empty()) return choice;
+  const DelimitedTable t = parse_delimited(companion, ',');
+  const int c = t.column("recording id");
+  if (c < 0) return "";
+  for (const std::vector<std::string>& row : t.rows)
+    if (c < int(row.size()) && !t.rows.front().empty() && row[size_t(c)] != t.rows.front()[size_t(c)])
+      return neon_recording(log);
+  return "";
 }
 
 }  // namespace
@@ -125,11 +140,15 @@ std::vector<GazeSample> parse_gaze(const std::string& raw, const std::string& na
   const bool pupil_labs =
       format == GazeFormat::kPupilCore || format == GazeFormat::kNeon || format == GazeFormat::kNeonSurface;
   if (pupil_labs && !o.blinks_text.empty()) {
-    const size_t n = apply_blinks(plain_text(o.blinks_text), o.blinks_name, o.recording, s);
+    const std::string blinks = plain_text(o.blinks_text);
+    const size_t n = apply_blinks(blinks, o.blinks_name, companion_recording(blinks, o.recording, text), s);
     notes.push_back(std::to_string(n) + " blinks from " + o.blinks_name);
   }
-  if (pupil_labs && !o.pupils_text.empty()) {
-    const size_t n = apply_pupils(plain_text(o.pupils_text), o.pupils_name, o, neon_recording(text), s, notes);
+  if (pupil_labs && !o.pupils_name.empty()) {
+    const std::string pupils = plain_text(o.pupils_text);
+    GazeImportOptions which = o;
+    which.recording = companion_recording(pupils, o.recording, text);
+    const size_t n = apply_pupils(pupils, o.pupils_name, which, s, notes);
     notes.push_back("pupil diameters from " + o.pupils_name + " for " + std::to_string(n) + " of " +
                     std::to_string(s.size()) + " samples");
   }

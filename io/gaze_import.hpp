@@ -116,11 +116,12 @@ size_t apply_blinks(const std::string& text, const std::string& name, const std:
 // 3d_eye_states.csv (pupil diameter left/right [mm]), interpolated
 // linearly between its samples at most 1 s apart, the eyes averaged
 // (o.eye: left, right or average); NaN elsewhere (a blink, low confidence,
-// a diameter outside 1-10 mm: noted), which the gaze timeline bridges. A
-// Neon file holding several recordings is read for o.recording, else
-// gaze_recording (the gaze's own). Returns how many samples got one; a
-// file without rows is an InputError naming it.
+// a diameter outside 1-10 mm of an eye read: noted), which the gaze
+// timeline bridges. A Neon file holding several recordings is read for
+// o.recording (parse_gaze passes the gaze log's own unless
+// --gaze-recording chose one). Returns how many samples got one; a file
+// without rows is an InputError naming it.
 size_t apply_pupils(const std::string& text, const std::string& name, const GazeImportOptions& o,
-                    const std::string& gaze_recording, std::vector<GazeSample>& samples, GazeNotes& notes);
+                    std::vector<GazeSample>& samples, GazeNotes& notes);
 
 }  // namespace eyestream::io

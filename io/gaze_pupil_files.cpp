@@ -55,7 +55,7 @@ int require(const DelimitedTable& t, const std::string& column, const std::strin
 }  // namespace
 
 size_t apply_pupils(const std::string& text, const std::string& name, const GazeImportOptions& o,
-                    const std::string& gaze_recording, std::vector<GazeSample>& samples, GazeNotes& notes) {
+                    std::vector<GazeSample>& samples, GazeNotes& notes) {
   DelimitedTable t = parse_delimited(text, ',');
   if (t.rows.empty()) throw InputError(name + ": holds no pupil rows (--gaze-pupils none reads none)");
   Series left, right;  // Pupil Core: eye1 is the left eye, eye0 the right
@@ -63,8 +63,8 @@ size_t apply_pupils(const std::string& text, const std::string& name, const Gaze
   if (t.column("timestamp [ns]") >= 0) {
     // Neon: timestamp [ns]; pupil diameter left/right [mm] (older
     // exports: one "pupil diameter [mm]", kept as both eyes').
-    GazeNotes ignored;  // (the gaze's own recording when the file holds several)
-    keep_recording(t, t.column("recording id"), o.recording.empty() ? gaze_recording : o.recording, name, ignored);
+    GazeNotes ignored;
+    keep_recording(t, t.column("recording id"), o.recording, name, ignored);
     const int ct = t.column("timestamp [ns]");
     const int one = t.column("pupil diameter [mm]");
     const int cl = one >= 0 ? one : require(t, "pupil diameter left [mm]", name, "a Neon 3d_eye_states.csv");
@@ -73,8 +73,8 @@ size_t apply_pupils(const std::string& text, const std::string& name, const Gaze
       double ns;
       if (!parse_number(cell(t.rows[r], ct), ns))
         throw InputError(name + ":" + std::to_string(t.line_numbers[r]) + ": timestamp [ns] is not a number");
-      add(left, ns * 1e-9, cell(t.rows[r], cl), outliers);
-      if (one < 0) add(right, ns * 1e-9, cell(t.rows[r], cr), outliers);
+      if (o.eye != "right" || one >= 0) add(left, ns * 1e-9, cell(t.rows[r], cl), outliers);
+      if (one < 0 && o.eye != "left") add(right, ns * 1e-9, cell(t.rows[r], cr), outliers);
     }
     if (one >= 0) right = left;  // one diameter for both eyes
   } else {
@@ -93,7 +93,8 @@ size_t apply_pupils(const std::string& text, const std::string& name, const Gaze
         throw InputError(where + ": eye_id is not 0 or 1");
       if (cm >= 0 && cell(t.rows[r], cm).find("3d") == std::string::npos) continue;
       if (!parse_number(cell(t.rows[r], cc), confidence)) throw InputError(where + ": confidence is not a number");
-      if (confidence >= o.min_confidence) add(eye == 1.0 ? left : right, time, cell(t.rows[r], cd), outliers);
+      const bool used = o.eye == "average" || (o.eye == "left") == (eye == 1.0);  // (outliers of an eye read)
+      if (used && confidence >= o.min_confidence) add(eye == 1.0 ? left : right, time, cell(t.rows[r], cd), outliers);
     }
   }
   const auto by_time = [](const auto& a, const auto& b) { return a.first < b.first; };

@@ -127,5 +127,41 @@ TEST(WavePsf, LinesShowForLightsFortyTimesTheirSurround) {
   }
 }
 
+// Frames finer than 35 px/deg (70 and 160: reduced by 2 and by 5), with
+// enough light pixels to take the FFT path: the lines move light and add
+// none, leave what lies beyond their reach alone, and are the same on one
+// thread as on two.
+TEST(WavePsf, OnFineFramesTheLinesMoveLightAddNoneAndDoNotDependOnThreads) {
+  for (const double ppd : {70.0, 160.0}) {
+    const EyeOptics optics;
+    const WaveLines lines(optics, ppd);
+    const PsfWeights w = optics.weights(0.0);
+    const int side = int(0.75 * ppd);  // a 0.75 deg square lamp: over 400 pixels after the reduction
+    const cv::Size frame(int(10 * ppd), int(8 * ppd));
+    cv::Mat rgb(frame, CV_32FC3, cv::Scalar::all(1.0));
+    rgb(cv::Rect(frame.width / 2 - side / 2, frame.height / 2 - side / 2, side, side)) = cv::Scalar(2e4, 1.5e4, 1e4);
+    const cv::Mat before(frame, CV_32FC3, cv::Scalar::all(1e3));  // (high: no clamping)
+    cv::Mat after = before.clone(), one = before.clone();
+    ASSERT_TRUE(lines.add(rgb, w, 4.0, 0.5, {frame.width / 2.0, frame.height / 2.0}, after));
+    const int threads = cv::getNumThreads();
+    cv::setNumThreads(1);
+    lines.add(rgb, w, 4.0, 0.5, {frame.width / 2.0, frame.height / 2.0}, one);
+    cv::setNumThreads(threads);
+    EXPECT_EQ(cv::norm(after, one, cv::NORM_INF), 0.0) << ppd << " px/deg: one thread";
+    const cv::Mat delta = after - before;
+    cv::Mat moved;
+    cv::absdiff(after, before, moved);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_LT(std::abs(cv::sum(delta)[c]), 1e-3 * cv::sum(moved)[c]) << ppd << " px/deg, channel " << c;
+    EXPECT_GT(cv::sum(moved)[1], 0.0);
+    // Beyond the lines' reach (3.6 deg and a pixel of the reduction) nothing.
+    const int reach = int((kWavePatternReach_deg + 0.1) * ppd) + side / 2;
+    const cv::Rect near(frame.width / 2 - reach, frame.height / 2 - reach, 2 * reach, 2 * reach);
+    cv::Mat far = moved.clone();
+    far(near & cv::Rect(0, 0, frame.width, frame.height)) = cv::Scalar::all(0);
+    EXPECT_EQ(cv::norm(far, cv::NORM_INF), 0.0) << ppd << " px/deg";
+  }
+}
+
 }  // namespace
 }  // namespace eyestream::glare

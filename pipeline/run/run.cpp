@@ -77,16 +77,16 @@ LoadedGaze load_gaze(const Settings& s, const io::SourceInfo& info) {
       info.frame_count > 0 && info.frames_per_second > 0 ? double(info.frame_count) / info.frames_per_second : -1.0;
   g.summary = io::summarise_gaze(g.samples, read.format, info.width, info.height, end_s);
   g.summary->notes = read.notes;
-  if (s.pupil_from_gaze && std::none_of(g.samples.begin(), g.samples.end(), io::has_usable_pupil))
-    throw InputError(s.gaze + ": --pupil-from-gaze: the log records no pupil diameter" +
-                     std::string(read.format == io::GazeFormat::kEyeLink
-                                     ? " (EyeLink: give millimetres per pupil unit with --gaze-pupil-scale)"
-                                     : read.format == io::GazeFormat::kTobii
-                                     ? " (Tobii: Pupil diameter left/right)"
-                                     : read.format == io::GazeFormat::kNative
-                                     ? " (native logs: a pupil_mm column)"
-                                     : " (Pupil Core: pupil_positions.csv, Neon: 3d_eye_states.csv, beside the "
-                                       "export or named with --gaze-pupils)"));
+  if (s.pupil_from_gaze && std::none_of(g.samples.begin(), g.samples.end(), io::has_usable_pupil)) {
+    std::string why = read.format == io::GazeFormat::kEyeLink
+                          ? " (EyeLink: give millimetres per pupil unit with --gaze-pupil-scale)"
+                      : read.format == io::GazeFormat::kTobii  ? " (Tobii: Pupil diameter left/right)"
+                      : read.format == io::GazeFormat::kNative ? " (native logs: a pupil_mm column)"
+                                                               : " (Pupil Core: pupil_positions.csv, Neon: 3d_eye_states.csv, "
+                                                                 "beside the export or named with --gaze-pupils)";
+    for (const std::string& n : read.notes) why += "; " + n;  // e.g. the diameters left out
+    throw InputError(s.gaze + ": --pupil-from-gaze: the log records no pupil diameter" + why);
+  }
   return g;
 }
 
