@@ -93,9 +93,12 @@ std::string companion_recording(const std::string& companion, const std::string&
   const DelimitedTable t = parse_delimited(companion, ',');
   const int c = t.column("recording id");
   if (c < 0) return "";
-  for (const std::vector<std::string>& row : t.rows)
-    if (c < int(row.size()) && !t.rows.front().empty() && row[size_t(c)] != t.rows.front()[size_t(c)])
-      return neon_recording(log);
+  const std::string* first = nullptr;  // the first row's recording (rows too short have none)
+  for (const std::vector<std::string>& row : t.rows) {
+    if (c >= int(row.size())) continue;
+    if (!first) first = &row[size_t(c)];
+    else if (row[size_t(c)] != *first) return neon_recording(log);
+  }
   return "";
 }
 
