@@ -5,6 +5,7 @@
 // display peak, plus the one-time kernel build with and without flare lines.
 #include <benchmark/benchmark.h>
 
+#include "glare/wave_lines.hpp"
 #include "pipeline/eye/frame_buffer_pool.hpp"
 #include "pipeline/eye/glare_stage.hpp"
 #include "pipeline/settings/quality_presets.hpp"
@@ -63,6 +64,37 @@ void BM_KernelBuild(benchmark::State& state, const std::string& model, bool flar
   for (auto _ : state) benchmark::DoNotOptimize(pipeline::GlareStage(plan_for(width, "exact", model, flare_lines)));
 }
 
+// The wave-optics lines (--flare-model wave) alone, at 1080p and 37
+// px/deg (drawn at half that): the pattern for one state, and the lines
+// of a frame's lights, few (scattered) or many (by FFT).
+constexpr double kWavePpd = 37.0;
+
+void BM_WavePattern(benchmark::State& state) {
+  pipeline::reuse_frame_buffers();  // as the program does
+  const glare::WaveAperture aperture = glare::viewer_aperture(1);
+  glare::WaveState s;
+  double t = 0.0;
+  for (auto _ : state) {
+    s.time_s = t += 1.0 / 30.0;
+    benchmark::DoNotOptimize(glare::wave_pattern(aperture, s, kWavePpd / 2, int(3.6 * kWavePpd / 2)));
+  }
+}
+
+void BM_WaveLines(benchmark::State& state) {
+  const int lights = int(state.range(0));
+  pipeline::reuse_frame_buffers();  // as the program does
+  const glare::EyeOptics optics;
+  const glare::WaveLines lines(optics, kWavePpd);
+  const glare::PsfWeights w = optics.weights(0.0);
+  cv::Mat frame(1080, 1920, CV_32FC3, cv::Scalar::all(0.3));
+  cv::RNG rng(3);
+  for (int i = 0; i < lights; ++i)
+    frame.at<cv::Vec3f>(rng.uniform(0, 1080), rng.uniform(0, 1920)) = cv::Vec3f::all(float(rng.uniform(1e3, 1e6)));
+  cv::Mat retinal(frame.size(), CV_32FC3, cv::Scalar::all(1.0));
+  double t = 0.0;
+  for (auto _ : state) benchmark::DoNotOptimize(lines.add(frame, w, 4.0, t += 1.0 / 30.0, {960, 540}, retinal));
+}
+
 void widths(benchmark::internal::Benchmark* b) {
   b->Arg(640)->Arg(1280)->Arg(1920)->Unit(benchmark::kMillisecond)->UseRealTime();
 }
@@ -78,6 +110,8 @@ BENCHMARK_CAPTURE(BM_GlareFrame, vos_split4, std::string("split4"), std::string(
 BENCHMARK_CAPTURE(BM_GlareFrame, balanced, std::string("preset:balanced"), std::string("vos"))->Apply(widths);
 BENCHMARK_CAPTURE(BM_GlareFrame, fast, std::string("preset:fast"), std::string("vos"))->Apply(widths);
 BENCHMARK_CAPTURE(BM_GlareFrame, gaussian, std::string("gaussian"), std::string("vos"))->Apply(widths);
+BENCHMARK(BM_WavePattern)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_WaveLines)->Arg(40)->Arg(2000)->Arg(20000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_KernelBuild, vos_flare_lines, std::string("vos"), true)->Apply(build_widths);
 BENCHMARK_CAPTURE(BM_KernelBuild, vos_plain, std::string("vos"), false)->Apply(build_widths);
 BENCHMARK_CAPTURE(BM_KernelBuild, cie_flare_lines, std::string("cie"), true)->Apply(build_widths);

@@ -1,5 +1,7 @@
 #include "glare/fft_convolver.hpp"
 
+#include "glare/fftw_planner.hpp"
+
 #include <fftw3.h>
 
 #include <algorithm>
@@ -11,12 +13,6 @@
 namespace eyestream::glare {
 
 namespace {
-
-// FFTW's planner is not thread-safe; execution of distinct plans is.
-std::mutex& planner_mutex() {
-  static std::mutex m;
-  return m;
-}
 
 // FFTW's interface, under names the engine reads well with.
 struct Fftw {
@@ -42,7 +38,7 @@ constexpr int kColumnBlock = 16;  // columns transformed together (fixed: result
 // The spectrum of a centred kernel on an nx x ny torus (double; r2c layout
 // ny x (nx / 2 + 1)).
 std::vector<std::complex<double>> kernel_spectrum(const cv::Mat& kernel, int nx, int ny) {
-  std::lock_guard<std::mutex> lock(planner_mutex());
+  std::lock_guard<std::mutex> lock(fftw_planner_mutex());
   double* real = fftw_alloc_real(size_t(nx) * ny);
   fftw_complex* spectrum = fftw_alloc_complex(size_t(nx / 2 + 1) * ny);
   const fftw_plan plan = fftw_plan_dft_r2c_2d(ny, nx, real, spectrum, FFTW_ESTIMATE);
@@ -112,7 +108,7 @@ class RowColumnEngine final : public FftConvolver::Engine {
           spectra_[i][2 * at + 1] = T(s[size_t(y) * nc_ + x].imag());
         }
     }
-    std::lock_guard<std::mutex> lock(planner_mutex());
+    std::lock_guard<std::mutex> lock(fftw_planner_mutex());
     for (auto& d : data_) d = F::complex(size_t(ny) * stride_);
     T* row = F::real(size_t(nx));
     forward_row_ = F::r2c(nx, row, data_[0]);
@@ -126,7 +122,7 @@ class RowColumnEngine final : public FftConvolver::Engine {
   }
 
   ~RowColumnEngine() override {
-    std::lock_guard<std::mutex> lock(planner_mutex());
+    std::lock_guard<std::mutex> lock(fftw_planner_mutex());
     F::destroy(forward_row_);
     F::destroy(backward_row_);
     for (auto& pair : column_)

@@ -18,10 +18,13 @@
 //     that the ring's light is unchanged (sum of lines M' = sum of lines):
 //     light moved along rings, none added, and haze thins the lines by its
 //     share (Matsuda and Ikedo).
-// Lights are scattered one by one when few (up to 400 pixels), else
-// convolved by FFT over their bounding box, a channel per task.
+// Lights are scattered one by one, row by row, while that costs less than
+// convolving their box by FFT (a channel per task); the search for lights
+// reads box sums from one integral image, and the lines come back to the
+// frame's resolution in one pass that also adds them.
 #pragma once
 
+#include <array>
 #include <opencv2/core.hpp>
 
 #include "glare/eye_optics.hpp"
@@ -42,20 +45,32 @@ class WaveLines {
   // whole factor to at most that (the pattern's detail is 0.02-0.04 deg).
   WaveLines(const EyeOptics& optics, double frame_pixels_per_degree);
 
-  // Adds the lines of the lights in `rgb` (cd/m^2, CV_32FC3, the light the
-  // engine spread) to `retinal` for weights w, the optics' pupil, the
-  // frame's time and the gaze (frame pixels). Returns whether any light
-  // showed lines.
+  // `retinal` with the lines of the lights in `rgb` (cd/m^2, CV_32FC3, the
+  // light the engine spread) added, into `result` (which may be `retinal`;
+  // otherwise (re)allocated), for weights w, the optics' pupil, the frame's
+  // time and the gaze (frame pixels). Returns whether any light showed
+  // lines; if none did, `result` is left as it was.
   bool add(const cv::Mat& rgb, const PsfWeights& w, double pupil_mm, double time_s, cv::Point2d gaze,
-           cv::Mat& retinal) const;
+           const cv::Mat& retinal, cv::Mat& result) const;
+  bool add(const cv::Mat& rgb, const PsfWeights& w, double pupil_mm, double time_s, cv::Point2d gaze,
+           cv::Mat& retinal) const {
+    return add(rgb, w, pupil_mm, time_s, gaze, retinal, retinal);
+  }
+
+  // How the lights' lines are spread: the cheaper way (automatic), or one
+  // way always (the tests compare the two).
+  enum class Spread { automatic, scatter, fft };
+  void set_spread(Spread s) { spread_ = s; }
 
   // The state add() would use (for the report and the tests).
   WaveState state(double pupil_mm, double time_s, double light_x_deg, double light_y_deg) const;
 
  private:
-  // Adds the lines of the lights of rgb to delta (rgb's size) within reach.
+  // The lines of the lights of rgb in delta (a plane per channel), which
+  // covers their reach (rgb's pixels).
+  using Planes = std::array<cv::Mat, 3>;
   bool lines(const cv::Mat& rgb, const PsfWeights& w, double pupil_mm, double time_s, cv::Point2d gaze,
-             cv::Mat& delta, cv::Rect& reach) const;
+             Planes& delta, cv::Rect& reach) const;
   struct Light {
     int x, y;
     cv::Vec3f rgb;
@@ -67,6 +82,7 @@ class WaveLines {
   ComponentKernels smooth_;  // (2 radius + 1) squared
   WaveAperture aperture_;
   Hippus hippus_;
+  Spread spread_ = Spread::automatic;
 };
 
 // The line part of channel c's kernel (inner, outer and halo with their

@@ -127,14 +127,16 @@ TEST(WavePsf, LinesShowForLightsFortyTimesTheirSurround) {
   }
 }
 
-// Frames finer than 35 px/deg (70 and 160: reduced by 2 and by 5), with
-// enough light pixels to take the FFT path: the lines move light and add
-// none, leave what lies beyond their reach alone, and are the same on one
-// thread as on two.
+// Frames finer than 35 px/deg (70 and 160: reduced by 2 and by 5), the
+// lines spread by FFT and by scattering each light: the lines move light
+// and add none, leave what lies beyond their reach alone, and are the
+// same on one thread as on two.
 TEST(WavePsf, OnFineFramesTheLinesMoveLightAddNoneAndDoNotDependOnThreads) {
-  for (const double ppd : {70.0, 160.0}) {
+  for (const double ppd : {70.0, 160.0})
+    for (const WaveLines::Spread spread : {WaveLines::Spread::fft, WaveLines::Spread::scatter}) {
     const EyeOptics optics;
-    const WaveLines lines(optics, ppd);
+    WaveLines lines(optics, ppd);
+    lines.set_spread(spread);
     const PsfWeights w = optics.weights(0.0);
     const int side = int(0.75 * ppd);  // a 0.75 deg square lamp: over 400 pixels after the reduction
     const cv::Size frame(int(10 * ppd), int(8 * ppd));
@@ -148,6 +150,10 @@ TEST(WavePsf, OnFineFramesTheLinesMoveLightAddNoneAndDoNotDependOnThreads) {
     lines.add(rgb, w, 4.0, 0.5, {frame.width / 2.0, frame.height / 2.0}, one);
     cv::setNumThreads(threads);
     EXPECT_EQ(cv::norm(after, one, cv::NORM_INF), 0.0) << ppd << " px/deg: one thread";
+    cv::Mat separate;  // into another image, `before` untouched
+    ASSERT_TRUE(lines.add(rgb, w, 4.0, 0.5, {frame.width / 2.0, frame.height / 2.0}, before, separate));
+    EXPECT_EQ(cv::norm(after, separate, cv::NORM_INF), 0.0) << ppd << " px/deg: into a new image";
+    EXPECT_EQ(cv::norm(before - cv::Scalar::all(1e3), cv::NORM_INF), 0.0);
     const cv::Mat delta = after - before;
     cv::Mat moved;
     cv::absdiff(after, before, moved);
@@ -161,6 +167,28 @@ TEST(WavePsf, OnFineFramesTheLinesMoveLightAddNoneAndDoNotDependOnThreads) {
     far(near & cv::Rect(0, 0, frame.width, frame.height)) = cv::Scalar::all(0);
     EXPECT_EQ(cv::norm(far, cv::NORM_INF), 0.0) << ppd << " px/deg";
   }
+}
+
+// The two ways of spreading the lines (an FFT of the lights' box, each
+// light scattered) draw the same lines: a lamp and scattered points.
+TEST(WavePsf, ScatteredAndFftLinesAgree) {
+  const EyeOptics optics;
+  const PsfWeights w = optics.weights(0.0);
+  cv::Mat rgb(400, 600, CV_32FC3, cv::Scalar::all(1.0));
+  rgb(cv::Rect(280, 190, 30, 12)) = cv::Scalar(3e4, 2e4, 1e4);
+  cv::RNG rng(5);
+  for (int i = 0; i < 25; ++i) rgb.at<cv::Vec3f>(rng.uniform(0, 400), rng.uniform(0, 600)) = cv::Vec3f::all(5e3f);
+  const cv::Mat before(rgb.size(), CV_32FC3, cv::Scalar::all(1e3));
+  cv::Mat drawn[2];
+  for (int i = 0; i < 2; ++i) {
+    WaveLines lines(optics, kPpd);
+    lines.set_spread(i == 0 ? WaveLines::Spread::fft : WaveLines::Spread::scatter);
+    drawn[i] = before.clone();
+    ASSERT_TRUE(lines.add(rgb, w, 4.0, 0.2, {300.0, 200.0}, drawn[i]));
+  }
+  const double change = cv::norm(drawn[1], before, cv::NORM_INF);
+  EXPECT_GT(change, 1.0);
+  EXPECT_LT(cv::norm(drawn[0], drawn[1], cv::NORM_INF), 1e-3 * change);
 }
 
 }  // namespace

@@ -194,8 +194,8 @@ void GlareStage::Cache::keep(const cv::Mat& rgb, const glare::PsfWeights& w, dou
 cv::Mat GlareStage::with_wave_lines(const cv::Mat& light, const glare::PsfWeights& w, double pupil_mm,
                                     const cv::Mat& retinal) {
   if (!wave_) return retinal;
-  cv::Mat out = retinal.clone();  // (the cache keeps the smooth glare)
-  return wave_->add(light, w, pupil_mm, moment_.time_s, moment_.gaze, out) ? out : retinal;
+  cv::Mat out;  // a new image: the cache keeps the smooth glare
+  return wave_->add(light, w, pupil_mm, moment_.time_s, moment_.gaze, retinal, out) ? out : retinal;
 }
 
 cv::Mat GlareStage::apply(const cv::Mat& rgb, double adaptation_log, double surround, double pupil_mm,
