@@ -67,6 +67,17 @@ cp "$work/psf.png" "$work/pictures/psf-halo.png"
 value psf.pupil_mm "$(awk '/^pupil/ {print $2}' "$work/psf.txt")"
 for r in 0.05 1 10; do value "psf.within_$r" "$(awk -v r="$r" '$3 == r {sub(",", "", $5); print $5}' "$work/psf.txt")"; done
 
+# The wave-optics PSF of a night pupil (6 mm), an open eye beside one
+# squinting (the upper lid 1.5 mm above the pupil's centre), the central
+# 300x300 of each (model.md).
+for lid in open squint; do
+  extra=(); [ $lid = squint ] && extra=(--eyelid-mrd1 1.5)
+  "$es" psf -o "$work/lid-$lid.exr" --width 300 --height 300 --fov-deg 9 --adaptation -2 --flare-model wave "${extra[@]}" > /dev/null
+done
+ffmpeg -v error -y -i "$work/lid-open.png" -i "$work/lid-squint.png" -filter_complex \
+  "[0:v]crop=300:300:(iw-300)/2:(ih-300)/2,pad=304:300:0:0:white,format=rgb24[a];[1:v]crop=300:300:(iw-300)/2:(ih-300)/2,format=rgb24[b];[a][b]hstack" \
+  "$work/pictures/eyelid-psf.png"
+
 # The tone-curve family (model.md).
 "$es" curves -o "$work/pictures/tone-curves.png"
 
@@ -117,14 +128,17 @@ if [ "$bench" = yes ]; then
 fi
 
 # Figures the test suite prints (usage.md, model.md): the presets' error
-# bounds at 256x144 and the wave lines' correlations through the command
-# line, from the tests built beside the program.
+# bounds at 256x144, the wave lines' correlations through the command
+# line and the squinting lid's streak, from the tests built beside the
+# program.
 tests="$(dirname "$es")/tests/eyestream_tests"
 [ -x "$tests" ] || { echo "docs/figures.sh: needs $tests (bash scripts/build.sh)" >&2; exit 2; }
 "$tests" --gtest_filter='QualityPresets.EachPresetStaysWithinItsErrorBoundAgainstReference' 2>&1 |
   sed -n 's/^\([a-z-]*\), \([a-z]*\): p99 CIEDE2000 \([0-9.]*\)$/presets.\1.\2 \3/p' >> "$values"
 "$tests" --gtest_filter='WavePsf.LinesFollowThePupilAndTheLightAndRepeatForTheSameState' 2>&1 |
   sed -n 's/^correlation: pupil 4.0 to 3.5 mm \([0-9.]*\), light moved 4 deg \([0-9.]*\), one frame later \([0-9.]*\)$/wave.pupil \1\nwave.light \2\nwave.frame \3/p' >> "$values"
+"$tests" --gtest_filter='Eyelid.ASquintingLidAddsAVerticalStreak' 2>&1 |
+  sed -n 's/^seed \([0-9]*\): vertical over horizontal modulation, open \([0-9.]*\), squinting (MRD1 1.5 mm) \([0-9.]*\)$/lid.\1.open \2\nlid.\1.squint \3/p' >> "$values"
 "$tests" --gtest_filter='WaveLinesCli.*' 2>&1 |
   sed -n 's/^\([0-9]*\) px: lines at 0.5 s, 30 against 60 frames\/s \([0-9.]*\); at 0.5 against 1.5 s \([0-9.]*\)$/wave.\1.rates \2\nwave.\1.second \3/p' >> "$values"
 

@@ -26,6 +26,9 @@ struct ViewerProfile {
   PupilModel pupil = PupilModel::moon_spencer;
   double pupil_field_deg = 0.0;  // Watson-Yellott: adapting field diameter; 0: the frame's own field
   std::int64_t seed = 1;         // the flare-line pattern (fixed for this viewer)
+  // The upper eyelid's margin above the pupil's centre (MRD1; about 4-5 mm
+  // open, 1-2 mm squinting); 0: no lid. Wave-optics lines only.
+  double eyelid_mrd1_mm = 0.0;
 };
 
 }  // namespace eyestream::glare

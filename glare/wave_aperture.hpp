@@ -16,7 +16,19 @@
 //   particles: 120 in the lens (depth 0.5-4 mm, radius 3-8 um) and 60 in
 //     the vitreous (4-16 mm, 5-15 um), opaque, over an 8 mm disc; the
 //     vitreous ones drift at up to 0.02 mm/s.
-// Eyelashes are not modelled.
+//   the upper eyelid (when the viewer's margin reflex distance MRD1 is
+//     given: the lid margin that far above the pupil's centre; about 4-5
+//     mm in an open eye, 1-2 mm squinting or with a drooping lid): opaque
+//     above its margin, which lies 3.5 mm in front of the pupil (on the
+//     cornea), and its lashes, 4 per mm of margin over 12 mm in two rows
+//     (the lid holds 90-160 in 2-3 rows), each 8-11 mm long and 0.07-0.12
+//     mm thick, leaving the margin forward and 10-25 deg downward and
+//     curling up to 20-45 deg upward at its tip: they sag up to 1.3 mm
+//     below the margin into the opening, further for a light above the gaze.
+//     Edges of the lid and the lashes cut the wave like the pupil's rim:
+//     their diffraction is the streaks across them (Nakamae et al. 1990,
+//     "A lighting model aiming at drive simulators", SIGGRAPH; Kakimoto et
+//     al. 2004; Ritschel et al. 2009). The lower lid is not modelled.
 #pragma once
 
 #include <cstdint>
@@ -32,9 +44,23 @@ struct WaveParticle {
   double vx_mm_s, vy_mm_s;  // drift
 };
 
+// An eyelash: a curve leaving the lid margin at root_x_mm (the margin at
+// -MRD1, y pointing down), depth root_depth_mm (negative: in front of the
+// pupil); along its forward run s (0..forward_mm) it lies at
+// x = root_x + s tan(side), y = -MRD1 + s tan(droop) - curl s^2.
+struct WaveLash {
+  double root_x_mm, root_depth_mm;
+  double forward_mm;
+  double tan_side, tan_droop, curl_per_mm;
+  double width_mm;
+};
+
 struct WaveAperture {
   std::vector<WaveParticle> particles;
   std::vector<double> band_offsets;  // fibre bands' phase offsets (rad), one per 40 um of radius
+  double eyelid_mrd1_mm = 0.0;       // the upper lid's margin above the pupil's centre; 0: no lid
+  std::vector<WaveLash> lashes;      // (with a lid)
+  static constexpr double kLidDepth_mm = -3.5;
   // The field as drawn (aperture_field): its side, samples per side, and
   // what does not change from frame to frame (the shrunk disc with its
   // soft rim and the fibres' phase; CV_64FC2).
@@ -46,8 +72,10 @@ struct WaveAperture {
   double fibre_phase_rad = 0.05;
 };
 
-// The viewer's elements, drawn on samples x samples over side_mm.
-WaveAperture wave_aperture(std::int64_t seed, double side_mm, int samples);
+// The viewer's elements, drawn on samples x samples over side_mm; the
+// upper lid and its lashes when eyelid_mrd1_mm > 0 (the rest is the same
+// with or without them).
+WaveAperture wave_aperture(std::int64_t seed, double side_mm, int samples, double eyelid_mrd1_mm = 0.0);
 
 // What the aperture depends on from frame to frame.
 struct WaveState {
@@ -65,7 +93,9 @@ struct WaveState {
 // drawn coarser (wave_pattern.hpp says why). The pupil is apodised by the
 // Stiles-Crawford effect (amplitude 10^(-0.025 r^2), r in mm of the true
 // pupil; Stiles and Crawford 1933, Applegate and Lakshminarayanan 1993)
-// and its rim softened over its last 5 %.
+// and its rim softened over its last 5 %. The lid and the lashes, seen
+// along the light as the particles are, are drawn with their places scaled
+// and their thickness kept, their edges softened over a sample.
 cv::Mat aperture_field(const WaveAperture& a, const WaveState& s);
 
 }  // namespace eyestream::glare

@@ -33,7 +33,7 @@ WaveLines::WaveLines(const EyeOptics& optics, double frame_ppd)
       haze_(optics.viewer().haze),
       radius_(std::max(1, int(kWavePatternReach_deg * ppd_))),
       smooth_(build_component_kernels(radius_ + 1, radius_ + 1, ppd_, optics)),
-      aperture_(viewer_aperture(optics.viewer().seed)),
+      aperture_(viewer_aperture(optics.viewer().seed, optics.viewer().eyelid_mrd1_mm)),
       hippus_(optics.viewer().seed) {}
 
 WaveState WaveLines::state(double pupil_mm, double time_s, double light_x_deg, double light_y_deg) const {

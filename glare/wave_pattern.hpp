@@ -45,7 +45,9 @@ inline constexpr int kWaveSamples = 512;
 inline constexpr double kWaveLambda0_nm = 550.0, kWaveBin_deg = 0.02;
 inline double wave_field_mm() { return kWaveLambda0_nm * 1e-6 / (kWaveBin_deg * 3.14159265358979323846 / 180.0); }
 // The viewer's aperture on that field.
-inline WaveAperture viewer_aperture(std::int64_t seed) { return wave_aperture(seed, wave_field_mm(), kWaveSamples); }
+inline WaveAperture viewer_aperture(std::int64_t seed, double eyelid_mrd1_mm = 0.0) {
+  return wave_aperture(seed, wave_field_mm(), kWaveSamples, eyelid_mrd1_mm);
+}
 
 // The largest angle the pattern reaches at every wavelength (deg).
 inline constexpr double kWavePatternReach_deg = 3.6;

@@ -55,6 +55,9 @@ Plan compile_plan(const Settings& s, const io::SourceInfo& source) {
   if (s.flare_model == "wave" && s.psf_model == "gaussian")
     throw UsageError("--flare-model wave lays its lines over an eye's PSF (--psf-model vos or cie), not the Gaussian");
   p.glare.wave_lines = s.flare_lines && s.flare_model == "wave";
+  if (s.eyelid_mrd1_mm && !p.glare.wave_lines)
+    throw UsageError("--eyelid-mrd1 draws the lid and its lashes into the wave-optics aperture: it needs "
+                     "--flare-model wave (with --flare-lines)");
   p.glare.flare_lines = s.flare_lines && !p.glare.wave_lines;
   if (s.lens_yellowing) {
     p.lens_filter = glare::lens_filter_rgb(s.viewer.age_years);
@@ -65,6 +68,7 @@ Plan compile_plan(const Settings& s, const io::SourceInfo& source) {
   }
   p.pupil_from_gaze = s.pupil_from_gaze;
   p.glare.viewer = s.viewer;
+  p.glare.viewer.eyelid_mrd1_mm = s.eyelid_mrd1_mm.value_or(0.0);
   p.glare.viewer.pupil =
       s.pupil_model == "watson-yellott" ? glare::PupilModel::watson_yellott : glare::PupilModel::moon_spencer;
   p.mesopic.enabled = s.mesopic;
@@ -104,6 +108,7 @@ std::string describe_viewer(const GlarePlan& g) {
   o << (g.viewer.glasses ? ", glasses" : "") << ", haze " << g.viewer.haze << ", pupil "
     << (g.viewer.pupil == glare::PupilModel::watson_yellott ? "Watson-Yellott" : "Moon-Spencer")
     << ", flare-line seed " << g.viewer.seed;
+  if (g.viewer.eyelid_mrd1_mm > 0.0) o << ", upper eyelid " << g.viewer.eyelid_mrd1_mm << " mm above the pupil";
   return o.str();
 }
 

@@ -102,6 +102,10 @@ ParamSet run_parameters(Settings& s) {
                  "lens fibres and particles, after Ritschel et al. 2009: they follow the pupil with its hippus, the "
                  "light's direction and the drifting vitreous, for lights 40 times their surround)",
                  optics, &s.flare_model, {"drawn", "wave"}));
+  set.add(number("eyelid-mrd1", "mm",
+                 "the upper eyelid's margin this far above the pupil's centre (MRD1: about 4-5 open, 1-2 squinting), "
+                 "its edge and lashes in the aperture of --flare-model wave; unset: no lid",
+                 optics, &s.eyelid_mrd1_mm, 0.5, 8));
   set.add(choice("glare-engine",
                  "Vos PSF convolution: exact (full-resolution FFT) or split (sharp centre at full resolution, tail "
                  "reduced by --glare-tail-factor)",

@@ -63,6 +63,7 @@ struct Settings {
   glare::PupilDynamics pupil_dynamics;
   std::string pupil_model = "moon-spencer";  // or watson-yellott (glare/pupil.hpp)
   bool flare_lines = true;            // radial streaks of corona and halo (glare/flare_lines.hpp)
+  std::optional<double> eyelid_mrd1_mm;  // the viewer's upper lid (wave lines only); unset: none
   std::string flare_model = "drawn";  // drawn (fixed per viewer) or wave (glare/wave_lines.hpp)
   bool lens_yellowing = false;        // the lens's density by age (glare/lens_density.hpp)
   bool pupil_from_gaze = false;       // the recorded pupil drives the optics

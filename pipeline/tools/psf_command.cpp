@@ -58,7 +58,7 @@ ViewerPsf viewer_psf(const Settings& s, int width, int height, double adaptation
     if (plan.glare.wave_lines) {
       glare::WaveState state;
       state.pupil_mm = psf.summary.pupil_mm;
-      wave = glare::wave_pattern(glare::viewer_aperture(plan.glare.viewer.seed), state, ppd,
+      wave = glare::wave_pattern(glare::viewer_aperture(plan.glare.viewer.seed, plan.glare.viewer.eyelid_mrd1_mm), state, ppd,
                                  int(glare::kWavePatternReach_deg * ppd));
     }
     for (int c = 0; c < 3; ++c) {
