@@ -7,6 +7,8 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
+#include "glare/linear_taps.hpp"
+
 namespace eyestream::glare {
 
 namespace {
@@ -85,27 +87,17 @@ namespace {
 // full-frame temporary.
 void add_upsampled(const std::array<cv::Mat, 3>& delta, const cv::Rect& reach, cv::Size reduced, int factor,
                    const cv::Rect& out, const cv::Mat& in, cv::Mat& result) {
-  struct Tap {
-    int a, b;  // the padded planes' columns or rows
-    float wb;  // the weight of b
-  };
+  // Taps into the padded planes (outside the reach: their border of zeros).
   const auto taps = [&](int from, int count, int reach_from, int reach_size, int reduced_size) {
-    std::vector<Tap> t(static_cast<size_t>(count));
-    for (int j = 0; j < count; ++j) {
-      const double s = (from + j + 0.5) / factor - 0.5;
-      int a = int(std::floor(s));
-      float w = float(s - a);
-      if (a < 0) a = 0, w = 0.0f;
-      if (a >= reduced_size - 1) a = reduced_size - 1, w = 0.0f;
-      const int b = std::min(a + 1, reduced_size - 1);
-      // Indices into the padded planes (outside the reach: their border).
-      const int padded = reach_size + 2;
-      t[size_t(j)] = {std::clamp(a - reach_from + 1, 0, padded - 1), std::clamp(b - reach_from + 1, 0, padded - 1), w};
+    std::vector<LinearTap> t = linear_taps(from, count, 1.0 / factor, reduced_size);
+    for (LinearTap& tap : t) {
+      tap.a = std::clamp(tap.a - reach_from + 1, 0, reach_size + 1);
+      tap.b = std::clamp(tap.b - reach_from + 1, 0, reach_size + 1);
     }
     return t;
   };
-  const std::vector<Tap> cols = taps(out.x, out.width, reach.x, reach.width, reduced.width);
-  const std::vector<Tap> rows = taps(out.y, out.height, reach.y, reach.height, reduced.height);
+  const std::vector<LinearTap> cols = taps(out.x, out.width, reach.x, reach.width, reduced.width);
+  const std::vector<LinearTap> rows = taps(out.y, out.height, reach.y, reach.height, reduced.height);
   // The planes with a border of zeros (outside the reach the delta is 0).
   std::array<cv::Mat, 3> padded;
   for (int c = 0; c < 3; ++c) cv::copyMakeBorder(delta[size_t(c)], padded[size_t(c)], 1, 1, 1, 1, cv::BORDER_CONSTANT, 0);
@@ -125,7 +117,7 @@ void add_upsampled(const std::array<cv::Mat, 3>& delta, const cv::Rect& reach, c
         const int right = out.x + out.width;
         std::memcpy(o + 3 * right, from + 3 * right, size_t(3 * (in.cols - right)) * sizeof(float));
       }
-      const Tap& ty = rows[size_t(y - out.y)];
+      const LinearTap& ty = rows[size_t(y - out.y)];
       // The row blended vertically, then each pixel horizontally.
       for (int c = 0; c < 3; ++c) {
         const float* a = padded[size_t(c)].ptr<float>(ty.a);
@@ -134,7 +126,7 @@ void add_upsampled(const std::array<cv::Mat, 3>& delta, const cv::Rect& reach, c
       }
       from += 3 * out.x, o += 3 * out.x;
       for (int j = 0; j < out.width; ++j, o += 3, from += 3) {
-        const Tap& tx = cols[size_t(j)];
+        const LinearTap& tx = cols[size_t(j)];
         const float *a = line[size_t(tx.a)].val, *b = line[size_t(tx.b)].val, wa = 1.0f - tx.wb;
         for (int c = 0; c < 3; ++c) o[c] = std::max(from[c] + a[c] * wa + b[c] * tx.wb, 0.0f);
       }

@@ -3,6 +3,7 @@
 #include <cstring>
 #include <opencv2/imgproc.hpp>
 
+#include "glare/linear_taps.hpp"
 #include "glare/uniform_field.hpp"
 #include "glare/veiling_luminance.hpp"
 #include "retina/luminance.hpp"
@@ -45,7 +46,7 @@ GlareStage::GlareStage(const Plan& plan)
     const double centre = g.at<double>(g.rows / 2) * g.at<double>(g.rows / 2);
     for (cv::Vec3d& c : centre_) c = cv::Vec3d::all(centre);
     if (plan.glare.full)
-      in_frame_.push_back(spread(cv::Mat(plan.height, plan.width, CV_32FC3, cv::Scalar::all(1.0)), {}));
+      in_frame_.push_back(in_frame_share(cv::Mat(plan.height, plan.width, CV_32FC3, cv::Scalar::all(1.0)), {}));
     return;
   }
   if (plan.glare.wave_lines) wave_ = std::make_unique<glare::WaveLines>(optics_, plan.pixels_per_degree);
@@ -87,7 +88,7 @@ GlareStage::GlareStage(const Plan& plan)
   for (int c = 0; c < 4; ++c) {
     glare::PsfWeights w;
     (c == 0 ? w.core : c == 1 ? w.inner : c == 2 ? w.outer : w.halo) = 1.0;
-    in_frame_.push_back(spread(ones, w));
+    in_frame_.push_back(in_frame_share(ones, w));
   }
 }
 
@@ -117,27 +118,65 @@ cv::Vec3f GlareStage::kept_share(const glare::PsfWeights& w) const {
   return plan_.glare.gaussian ? cv::Vec3f::all(float(centre_[0][0])) : cv::Vec3f(float(k[0]), float(k[1]), float(k[2]));
 }
 
-cv::Mat GlareStage::spread(const cv::Mat& rgb, const glare::PsfWeights& w) const {
+cv::Mat GlareStage::in_frame_share(const cv::Mat& ones, const glare::PsfWeights& w) const {
+  return plane_->identity() ? spread_plane(ones, w) : moved_light(ones, w);
+}
+
+cv::Mat GlareStage::moved_light(const cv::Mat& rgb, const glare::PsfWeights& w) const {
   const FrameProjection& p = *plane_;
-  if (p.identity()) return spread_plane(rgb, w);
-  // The plane carries the light that leaves its pixel; the light the PSF
-  // keeps there stays on the frame's pixels, sharp.
-  const cv::Vec3f kept = kept_share(w);
   const cv::Mat flux = p.to_plane_flux(to_glare_frame(rgb));
   cv::Mat scattered = spread_plane(flux, w);
   if (plan_.glare.gaussian) {  // a blur keeps its centre: take it out
+    const cv::Vec3f kept = kept_share(w);
     cv::Mat centre;
     cv::multiply(flux, cv::Scalar(kept[0], kept[1], kept[2]), centre);
     scattered -= centre;
     scattered = cv::max(scattered, 0.0);
   }
-  cv::Mat out = p.to_frame_image(scattered);
-  if (out.size() != rgb.size()) cv::resize(out, out, rgb.size(), 0, 0, cv::INTER_LINEAR);
-  cv::parallel_for_(cv::Range(0, out.rows), [&](const cv::Range& rows) {
-    for (int y = rows.start; y < rows.end; ++y) {
+  return p.to_frame_image(scattered);
+}
+
+cv::Mat GlareStage::spread(const cv::Mat& rgb, const glare::PsfWeights& w, double surround) const {
+  if (plane_->identity()) {
+    cv::Mat out = spread_plane(rgb, w);
+    add_surround(out, w, surround);
+    return out;
+  }
+  // The plane carries the light that leaves its pixel; the light the PSF
+  // keeps there stays on the frame's pixels, sharp. The moved light (and
+  // the surround's, which is as smooth) comes back to the frame's size in
+  // the same sweep that adds the kept light.
+  cv::Mat moved = moved_light(rgb, w);
+  add_surround(moved, w, surround);
+  const cv::Vec3f kept = kept_share(w);
+  if (moved.size() == rgb.size()) {
+    cv::parallel_for_(cv::Range(0, moved.rows), [&](const cv::Range& rows) {
+      for (int y = rows.start; y < rows.end; ++y) {
+        cv::Vec3f* o = moved.ptr<cv::Vec3f>(y);
+        const cv::Vec3f* in = rgb.ptr<cv::Vec3f>(y);
+        for (int x = 0; x < moved.cols; ++x) o[x] += kept.mul(in[x]);
+      }
+    });
+    return moved;
+  }
+  cv::Mat out(rgb.size(), CV_32FC3);
+  const std::vector<glare::LinearTap> cols =
+      glare::linear_taps(0, out.cols, double(moved.cols) / out.cols, moved.cols);
+  const std::vector<glare::LinearTap> rows =
+      glare::linear_taps(0, out.rows, double(moved.rows) / out.rows, moved.rows);
+  cv::parallel_for_(cv::Range(0, out.rows), [&](const cv::Range& range) {
+    std::vector<cv::Vec3f> line(size_t(moved.cols));
+    for (int y = range.start; y < range.end; ++y) {
+      const glare::LinearTap& ty = rows[size_t(y)];
+      const cv::Vec3f* a = moved.ptr<cv::Vec3f>(ty.a);
+      const cv::Vec3f* b = moved.ptr<cv::Vec3f>(ty.b);
+      for (size_t k = 0; k < line.size(); ++k) line[k] = a[k] * (1.0f - ty.wb) + b[k] * ty.wb;
       cv::Vec3f* o = out.ptr<cv::Vec3f>(y);
       const cv::Vec3f* in = rgb.ptr<cv::Vec3f>(y);
-      for (int x = 0; x < out.cols; ++x) o[x] += kept.mul(in[x]);
+      for (int x = 0; x < out.cols; ++x) {
+        const glare::LinearTap& tx = cols[size_t(x)];
+        o[x] = line[size_t(tx.a)] * (1.0f - tx.wb) + line[size_t(tx.b)] * tx.wb + kept.mul(in[x]);
+      }
     }
   });
   return out;
@@ -154,18 +193,21 @@ cv::Mat GlareStage::spread_plane(const cv::Mat& rgb, const glare::PsfWeights& w)
   return split_ ? split_->convolve(rgb, w) : convolver_->convolve(rgb, w);
 }
 
-void GlareStage::add_surround(cv::Mat& retinal, const glare::PsfWeights& w, double surround) const {
-  if (!(surround > 0.0)) return;
+void GlareStage::add_surround(cv::Mat& light, const glare::PsfWeights& w, double surround) const {
+  if (!(surround > 0.0) || in_frame_.empty()) return;
+  CV_Assert(light.size() == in_frame_[0].size());
   const float s = float(surround);
   const float weights[4] = {float(w.core), float(w.inner), float(w.outer), float(w.halo)};
+  // The maps hold the moved light only when the kept light is added later.
+  const cv::Vec3f kept = plane_->identity() ? cv::Vec3f(0, 0, 0) : kept_share(w);
   const size_t n = in_frame_.size();
-  cv::parallel_for_(cv::Range(0, retinal.rows), [&](const cv::Range& rows) {
+  cv::parallel_for_(cv::Range(0, light.rows), [&](const cv::Range& rows) {
     for (int y = rows.start; y < rows.end; ++y) {
-      cv::Vec3f* out = retinal.ptr<cv::Vec3f>(y);
+      cv::Vec3f* out = light.ptr<cv::Vec3f>(y);
       const cv::Vec3f* m[4] = {};
       for (size_t c = 0; c < n; ++c) m[c] = in_frame_[c].ptr<cv::Vec3f>(y);
-      for (int x = 0; x < retinal.cols; ++x) {
-        cv::Vec3f inside = n == 1 ? m[0][x] : cv::Vec3f(0, 0, 0);
+      for (int x = 0; x < light.cols; ++x) {
+        cv::Vec3f inside = kept + (n == 1 ? m[0][x] : cv::Vec3f(0, 0, 0));
         if (n == 4)
           for (int c = 0; c < 4; ++c) inside += weights[c] * m[c][x];
         for (int k = 0; k < 3; ++k) out[x][k] += s * std::max(0.0f, 1.0f - inside[k]);
@@ -223,8 +265,7 @@ cv::Mat GlareStage::apply(const cv::Mat& rgb, double adaptation_log, double surr
       return with_wave_lines(rgb, w, pupil_mm, cache_.retinal);
     }
     if (ran) *ran = true;
-    cv::Mat out = spread(rgb, w);
-    add_surround(out, w, surround);
+    cv::Mat out = spread(rgb, w, surround);
     if (plan_.skip) cache_.keep(rgb, w, surround, out);
     return with_wave_lines(rgb, w, pupil_mm, out);
   }

@@ -55,15 +55,24 @@ class GlareStage {
   // angles: on the angle plane (frame_projection.hpp) unless the frame is
   // its own, the light the PSF keeps within its centre pixel staying on the
   // frame's pixels, unresampled.
-  cv::Mat spread(const cv::Mat& rgb, const glare::PsfWeights& w) const;
+  // With surround_cd_m2 > 0 (full mode), the surround's scattered light too.
+  cv::Mat spread(const cv::Mat& rgb, const glare::PsfWeights& w, double surround_cd_m2 = 0.0) const;
+  // Off the frame's own plane: the light the PSF moves out of its pixel,
+  // on the glare frame's pixels (the halved frame's, or the frame's).
+  cv::Mat moved_light(const cv::Mat& rgb, const glare::PsfWeights& w) const;
+  // What in_frame_ holds for a component: spread (the frame's own plane)
+  // or moved_light of a frame of ones.
+  cv::Mat in_frame_share(const cv::Mat& ones, const glare::PsfWeights& w) const;
   // The convolution on the angle plane.
   cv::Mat spread_plane(const cv::Mat& plane, const glare::PsfWeights& w) const;
   // Per channel, the share of a pixel's light the PSF of weights `w` keeps
   // in that pixel.
   cv::Vec3f kept_share(const glare::PsfWeights& w) const;
   // Adds the light the surround scatters into the frame: S (1 - M(x)),
-  // M(x) the share of the PSF at x that falls inside the frame.
-  void add_surround(cv::Mat& retinal, const glare::PsfWeights& w, double surround_cd_m2) const;
+  // M(x) the share of the PSF at x that falls inside the frame, to `light`
+  // (spread's result on the frame's own plane, moved_light's otherwise,
+  // whose M is the maps' plus the kept share).
+  void add_surround(cv::Mat& light, const glare::PsfWeights& w, double surround_cd_m2) const;
 
   // The wave-optics lines of `light` (what the engine spread) added to a
   // copy of `retinal`, when the plan asks for them.
@@ -91,7 +100,8 @@ class GlareStage {
   std::unique_ptr<glare::FftConvolver> convolver_;     // exact engine
   std::unique_ptr<glare::SplitConvolver> split_;       // or the split one
   // Full mode: per component (core, inner, outer, halo), the share of the
-  // PSF centred at each pixel that falls inside the frame (CV_32FC3).
+  // PSF centred at each pixel that falls inside the frame (CV_32FC3); off
+  // the frame's own plane, without the kept share and at moved_light's size.
   std::vector<cv::Mat> in_frame_;
   // Per component (core, inner, outer, halo) and channel, the kernel's
   // centre pixel.
