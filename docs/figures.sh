@@ -137,8 +137,8 @@ tests="$(dirname "$es")/tests/eyestream_tests"
   sed -n 's/^\([a-z-]*\), \([a-z]*\): p99 CIEDE2000 \([0-9.]*\)$/presets.\1.\2 \3/p' >> "$values"
 "$tests" --gtest_filter='WavePsf.LinesFollowThePupilAndTheLightAndRepeatForTheSameState' 2>&1 |
   sed -n 's/^correlation: pupil 4.0 to 3.5 mm \([0-9.]*\), light moved 4 deg \([0-9.]*\), one frame later \([0-9.]*\)$/wave.pupil \1\nwave.light \2\nwave.frame \3/p' >> "$values"
-"$tests" --gtest_filter='Eyelid.ASquintingLidAddsAVerticalStreak' 2>&1 |
-  sed -n 's/^seed \([0-9]*\): vertical over horizontal modulation, open \([0-9.]*\), squinting (MRD1 1.5 mm) \([0-9.]*\)$/lid.\1.open \2\nlid.\1.squint \3/p' >> "$values"
+"$tests" --gtest_filter='Eyelid.ASquintingLidAndItsLashesStreakAlongTheAxes' 2>&1 |
+  sed -n 's/^seed \([0-9]*\): modulation along the axes over the diagonals, open \([0-9.]*\), squinting (MRD1 1.5 mm) \([0-9.]*\)$/lid.\1.open \2\nlid.\1.squint \3/p' >> "$values"
 "$tests" --gtest_filter='WaveLinesCli.*' 2>&1 |
   sed -n 's/^\([0-9]*\) px: lines at 0.5 s, 30 against 60 frames\/s \([0-9.]*\); at 0.5 against 1.5 s \([0-9.]*\)$/wave.\1.rates \2\nwave.\1.second \3/p' >> "$values"
 

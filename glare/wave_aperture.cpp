@@ -155,7 +155,7 @@ cv::Mat aperture_field(const WaveAperture& a, const WaveState& s) {
       cv::Point2d from = at(0.0);
       for (int i = 1; i <= kPieces; ++i) {
         const cv::Point2d to = at(l.forward_mm * i / kPieces);
-        occlude_segment(out, x0, dx, from, to, 0.5 * l.width_mm);
+        occlude_segment(out, x0, dx, from, to, 0.5 * l.width_mm * shrink);
         from = to;
       }
     }

@@ -26,7 +26,8 @@
 //     curling up to 20-45 deg upward at its tip: they sag up to 1.3 mm
 //     below the margin into the opening, further for a light above the gaze.
 //     Edges of the lid and the lashes cut the wave like the pupil's rim:
-//     their diffraction is the streaks across them (Nakamae et al. 1990,
+//     their diffraction is the streaks across them (the lid's vertical,
+//     the hanging lashes' horizontal) (Nakamae et al. 1990,
 //     "A lighting model aiming at drive simulators", SIGGRAPH; Kakimoto et
 //     al. 2004; Ritschel et al. 2009). The lower lid is not modelled.
 #pragma once
@@ -94,8 +95,12 @@ struct WaveState {
 // Stiles-Crawford effect (amplitude 10^(-0.025 r^2), r in mm of the true
 // pupil; Stiles and Crawford 1933, Applegate and Lakshminarayanan 1993)
 // and its rim softened over its last 5 %. The lid and the lashes, seen
-// along the light as the particles are, are drawn with their places scaled
-// and their thickness kept, their edges softened over a sample.
+// along the light as the particles are, are drawn as a true picture
+// shrunk with the pupil, places and thickness alike (4 lashes per mm of
+// 0.07-0.12 mm each kept with their places would merge into a band at
+// the shrunk scale): they block their true share of the opening, and a
+// lash's own streak is as much wider than a real lash's as the pupil was
+// shrunk. Edges are softened over a sample.
 cv::Mat aperture_field(const WaveAperture& a, const WaveState& s);
 
 }  // namespace eyestream::glare

@@ -20,15 +20,16 @@ constexpr int kSmoothCentre_px = 3;
 
 
 // The far-field intensity of the aperture (fftshifted, kSize^2, CV_64F):
-// one complex 2-D FFT by FFTW (a fixed FFTW_ESTIMATE plan on 64-byte
-// aligned data: the same result on any thread count).
+// one complex 2-D FFT by FFTW (one fixed FFTW_ESTIMATE plan, made for
+// data of any alignment, as the host's allocator may give: the same result
+// on any thread count).
 cv::Mat far_field(const WaveAperture& aperture, const WaveState& state) {
   cv::Mat field = aperture_field(aperture, state);  // CV_64FC2: FFTW's complex layout
   CV_Assert(field.isContinuous() && field.rows == kSize && field.cols == kSize);
   auto* data = reinterpret_cast<fftw_complex*>(field.ptr<double>());
   static const fftw_plan plan = [data] {
     std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-    return fftw_plan_dft_2d(kSize, kSize, data, data, FFTW_FORWARD, FFTW_ESTIMATE);
+    return fftw_plan_dft_2d(kSize, kSize, data, data, FFTW_FORWARD, FFTW_ESTIMATE | FFTW_UNALIGNED);
   }();
   fftw_execute_dft(plan, data, data);  // executing a plan is thread-safe
   // |F|^2, fftshifted: zero frequency to (kSize / 2, kSize / 2).

@@ -44,13 +44,19 @@ TEST(Eyelid, TheLidDarkensTheApertureAboveItsShadowWhichALightAboveLowers) {
     // The margin 3.5 mm in front of the pupil, seen along the light.
     const double shadow = -kMrd1 - 3.5 * std::tan(light_deg * M_PI / 180.0);
     const double sample_mm = row_mm(open, 1, kPupil) - row_mm(open, 0, kPupil);
-    int dark_rows = 0, lit_rows_above = 0;
+    int dark_rows = 0, lit_rows_above = 0, open_rows_below = 0;
     for (int r = 0; r < with.rows; ++r) {
       const double y = row_mm(open, r, kPupil);
       if (row_power(without, r) == 0.0) continue;  // outside the pupil
       if (y < shadow - sample_mm) {
         ++dark_rows;
         lit_rows_above += row_power(with, r) > 0.0;
+      }
+      // Just below the shadow the lashes' roots block their share (4 per
+      // mm, 0.07-0.12 mm thick: about 40 %), not the whole row.
+      if (y > shadow + sample_mm && y < shadow + 0.2) {
+        EXPECT_GT(row_power(with, r), 0.3 * row_power(without, r)) << light_deg << " deg, " << y << " mm";
+        ++open_rows_below;
       }
       // Below the lashes' reach (they sag at most tan(25 deg)^2 / (4 curl),
       // 1.22 mm, plus half their width, and 13 mm of depth times the
@@ -61,6 +67,7 @@ TEST(Eyelid, TheLidDarkensTheApertureAboveItsShadowWhichALightAboveLowers) {
     }
     EXPECT_GT(dark_rows, light_deg > 0.0 ? 5 : 20) << light_deg << " deg";
     EXPECT_EQ(lit_rows_above, 0) << light_deg << " deg: the lid above its shadow";
+    EXPECT_GT(open_rows_below, 5) << light_deg << " deg";
     // The lashes: dark samples below the margin's shadow, more for a light above.
     if (light_deg == -10.0) {
       int lash_samples = 0;
@@ -83,29 +90,31 @@ TEST(Eyelid, AnOpenEyesLidLeavesASmallPupilAlone) {
 }
 
 // The modulation's energy (G) in the 0.5-3 deg rings within 10 deg of the
-// vertical over that within 10 deg of the horizontal.
-double vertical_over_horizontal(const WavePattern& p) {
-  double vertical = 0.0, horizontal = 0.0;
+// vertical and of the horizontal over that within 10 deg of the diagonals.
+double axes_over_diagonals(const WavePattern& p) {
+  double axes = 0.0, diagonals = 0.0;
   for (int y = -p.radius; y <= p.radius; ++y)
     for (int x = -p.radius; x <= p.radius; ++x) {
       const double t = std::hypot(x, y) / p.pixels_per_degree;
       if (t < 0.5 || t > 3.0) continue;
       const double angle = std::atan2(std::abs(double(y)), std::abs(double(x))) * 180.0 / M_PI;
       const double m = p.rgb[1].at<double>(y + p.radius, x + p.radius) - 1.0;
-      if (angle > 80.0) vertical += m * m;
-      if (angle < 10.0) horizontal += m * m;
+      if (angle > 80.0 || angle < 10.0) axes += m * m;
+      if (std::abs(angle - 45.0) < 10.0) diagonals += m * m;
     }
-  return vertical / horizontal;
+  return axes / diagonals;
 }
 
-TEST(Eyelid, ASquintingLidAddsAVerticalStreak) {
+TEST(Eyelid, ASquintingLidAndItsLashesStreakAlongTheAxes) {
+  // The lid's horizontal edge streaks vertically, the hanging lashes
+  // horizontally: the modulation gathers along the axes.
   const WaveState s{6.0, 0.5, 0.0, 0.0};
-  for (const std::int64_t seed : {3, 11}) {
-    const double open = vertical_over_horizontal(wave_pattern(viewer_aperture(seed), s, kPpd, 70));
-    const double squint = vertical_over_horizontal(wave_pattern(viewer_aperture(seed, 1.5), s, kPpd, 70));
-    std::printf("seed %lld: vertical over horizontal modulation, open %.2f, squinting (MRD1 1.5 mm) %.2f\n",
+  for (const std::int64_t seed : {3, 11, 1, 2, 5}) {
+    const double open = axes_over_diagonals(wave_pattern(viewer_aperture(seed), s, kPpd, 70));
+    const double squint = axes_over_diagonals(wave_pattern(viewer_aperture(seed, 1.5), s, kPpd, 70));
+    std::printf("seed %lld: modulation along the axes over the diagonals, open %.2f, squinting (MRD1 1.5 mm) %.2f\n",
                 static_cast<long long>(seed), open, squint);
-    EXPECT_GT(squint, 1.5 * open) << "seed " << seed;
+    EXPECT_GT(squint, 1.3 * open) << "seed " << seed;
   }
 }
 

@@ -169,6 +169,29 @@ TEST(WavePsf, OnFineFramesTheLinesMoveLightAddNoneAndDoNotDependOnThreads) {
   }
 }
 
+// A frame that is not whole blocks of the reduction (70 px/deg: by 2; 160:
+// by 5) draws the lines of the same frame with black columns and rows
+// added to make whole blocks: the lines do not shift.
+TEST(WavePsf, FramesOfAnySizeDrawTheLinesInPlace) {
+  for (const double ppd : {70.0, 160.0}) {
+    const EyeOptics optics;
+    const WaveLines lines(optics, ppd);
+    const PsfWeights w = optics.weights(0.0);
+    const int factor = ppd > 100 ? 5 : 2;
+    const cv::Size whole(factor * 151, factor * 97), odd(whole.width - factor + 1, whole.height - factor + 1);
+    cv::Mat big(whole, CV_32FC3, cv::Scalar::all(0.0));
+    cv::Mat scene = big(cv::Rect(0, 0, odd.width, odd.height));
+    scene.setTo(cv::Scalar::all(1.0));
+    cv::circle(scene, {odd.width - 9, odd.height / 2}, 3, cv::Scalar(2e4, 1.5e4, 1e4), cv::FILLED);  // at the odd edge
+    cv::Mat drawn_big(whole, CV_32FC3, cv::Scalar::all(1e3)), drawn(odd, CV_32FC3, cv::Scalar::all(1e3));
+    const cv::Point2d gaze(odd.width / 2.0, odd.height / 2.0);
+    ASSERT_TRUE(lines.add(big, w, 4.0, 0.5, gaze, drawn_big));
+    ASSERT_TRUE(lines.add(scene.clone(), w, 4.0, 0.5, gaze, drawn));
+    EXPECT_GT(cv::norm(drawn - cv::Scalar::all(1e3), cv::NORM_INF), 1.0) << ppd;
+    EXPECT_EQ(cv::norm(drawn, drawn_big(cv::Rect(0, 0, odd.width, odd.height)), cv::NORM_INF), 0.0) << ppd << " px/deg";
+  }
+}
+
 // The two ways of spreading the lines (an FFT of the lights' box, each
 // light scattered) draw the same lines: a lamp and scattered points.
 TEST(WavePsf, ScatteredAndFftLinesAgree) {

@@ -233,10 +233,11 @@ void GlareStage::Cache::keep(const cv::Mat& rgb, const glare::PsfWeights& w, dou
   retinal = out;
 }
 
-cv::Mat GlareStage::with_wave_lines(const cv::Mat& light, const glare::PsfWeights& w, double pupil_mm,
-                                    const cv::Mat& retinal) {
+cv::Mat GlareStage::with_wave_lines(const cv::Mat& light, const glare::PsfWeights& w, double pupil_mm, cv::Mat retinal,
+                                    bool shared) {
   if (!wave_) return retinal;
-  cv::Mat out;  // a new image: the cache keeps the smooth glare
+  cv::Mat out;  // a new image when the cache keeps the smooth glare, else in place
+  if (!shared) out = retinal;
   return wave_->add(light, w, pupil_mm, moment_.time_s, moment_.gaze, retinal, out) ? out : retinal;
 }
 
@@ -262,12 +263,12 @@ cv::Mat GlareStage::apply(const cv::Mat& rgb, double adaptation_log, double surr
     if (plan_.skip && cache_.matches(rgb, w, surround)) {
       if (ran) *ran = false;
       if (reused) *reused = true;
-      return with_wave_lines(rgb, w, pupil_mm, cache_.retinal);
+      return with_wave_lines(rgb, w, pupil_mm, cache_.retinal, true);
     }
     if (ran) *ran = true;
     cv::Mat out = spread(rgb, w, surround);
     if (plan_.skip) cache_.keep(rgb, w, surround, out);
-    return with_wave_lines(rgb, w, pupil_mm, out);
+    return with_wave_lines(rgb, w, pupil_mm, out, plan_.skip);
   }
   // The excess over the display peak, with the pixel's colour (Spencer et
   // al. 1995 sec. 3.2; Yoshida et al. 2008): dL = max(L - L_dmax, 0),
@@ -293,7 +294,7 @@ cv::Mat GlareStage::apply(const cv::Mat& rgb, double adaptation_log, double surr
   if (ran) *ran = any;
   if (!any && plan_.skip) return rgb;
   if (ran) *ran = true;
-  return with_wave_lines(excess, w, pupil_mm, kept + spread(excess, w));
+  return with_wave_lines(excess, w, pupil_mm, kept + spread(excess, w), false);
 }
 
 }  // namespace eyestream::pipeline

@@ -74,9 +74,11 @@ class GlareStage {
   // whose M is the maps' plus the kept share).
   void add_surround(cv::Mat& light, const glare::PsfWeights& w, double surround_cd_m2) const;
 
-  // The wave-optics lines of `light` (what the engine spread) added to a
-  // copy of `retinal`, when the plan asks for them.
-  cv::Mat with_wave_lines(const cv::Mat& light, const glare::PsfWeights& w, double pupil_mm, const cv::Mat& retinal);
+  // The wave-optics lines of `light` (what the engine spread) added to
+  // `retinal`, when the plan asks for them: into a new image when
+  // `retinal` is shared (the cache keeps it), else in place.
+  cv::Mat with_wave_lines(const cv::Mat& light, const glare::PsfWeights& w, double pupil_mm, cv::Mat retinal,
+                          bool shared);
 
   const Plan plan_;
   const glare::EyeOptics optics_;
