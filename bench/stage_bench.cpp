@@ -63,7 +63,7 @@ void BM_EncodeDithered8(benchmark::State& state) {
 
 // The acuity loss of a 1080p frame at 37 px/deg (the default viewing of a
 // 1920 px frame), every pixel mesopic (rho 0.3 plus the noise), two
-// threads, by pyramid_from_px x 10: 0 reference, 60 balanced, 30 fast.
+// threads, by pyramid_from_px x 10: 0 reference, 60 balanced, 15 fast (30: fast before 2026-12-02).
 void BM_AcuityLoss(benchmark::State& state) {
   cv::setNumThreads(2);
   retina::AcuityParams params;

@@ -88,8 +88,19 @@ GlareStage::GlareStage(const Plan& plan)
   for (int c = 0; c < 4; ++c) {
     glare::PsfWeights w;
     (c == 0 ? w.core : c == 1 ? w.inner : c == 2 ? w.outer : w.halo) = 1.0;
-    in_frame_.push_back(in_frame_share(ones, w));
+    in_frame_.push_back(one_channel_if_grey(in_frame_share(ones, w)));
   }
+}
+
+cv::Mat GlareStage::one_channel_if_grey(const cv::Mat& map) {
+  // The core and the scatter are the same in every channel (only the
+  // halo's rings are coloured): one channel holds them, a third of the
+  // memory and of the reads.
+  std::vector<cv::Mat> channels;
+  cv::split(map, channels);
+  const bool grey = cv::norm(channels[0], channels[1], cv::NORM_INF) == 0.0 &&
+                    cv::norm(channels[0], channels[2], cv::NORM_INF) == 0.0;
+  return grey ? channels[0] : map;
 }
 
 std::optional<double> GlareStage::veil_at(const cv::Mat& luminance, double adaptation_log, double pupil_mm, double x,
@@ -201,15 +212,23 @@ void GlareStage::add_surround(cv::Mat& light, const glare::PsfWeights& w, double
   // The maps hold the moved light only when the kept light is added later.
   const cv::Vec3f kept = plane_->identity() ? cv::Vec3f(0, 0, 0) : kept_share(w);
   const size_t n = in_frame_.size();
+  int stride[4] = {};  // 3 for a coloured map, 1 for a grey one (one_channel_if_grey)
+  for (size_t c = 0; c < n; ++c) stride[c] = in_frame_[c].channels();
   cv::parallel_for_(cv::Range(0, light.rows), [&](const cv::Range& rows) {
     for (int y = rows.start; y < rows.end; ++y) {
       cv::Vec3f* out = light.ptr<cv::Vec3f>(y);
-      const cv::Vec3f* m[4] = {};
-      for (size_t c = 0; c < n; ++c) m[c] = in_frame_[c].ptr<cv::Vec3f>(y);
+      const float* m[4] = {};
+      for (size_t c = 0; c < n; ++c) m[c] = in_frame_[c].ptr<float>(y);
       for (int x = 0; x < light.cols; ++x) {
-        cv::Vec3f inside = kept + (n == 1 ? m[0][x] : cv::Vec3f(0, 0, 0));
-        if (n == 4)
-          for (int c = 0; c < 4; ++c) inside += weights[c] * m[c][x];
+        cv::Vec3f inside = kept;
+        for (size_t c = 0; c < n; ++c) {
+          const float* v = m[c] + x * stride[c];
+          const float wc = n == 1 ? 1.0f : weights[c];
+          if (stride[c] == 3)
+            inside += wc * cv::Vec3f(v[0], v[1], v[2]);
+          else
+            inside += cv::Vec3f::all(wc * v[0]);
+        }
         for (int k = 0; k < 3; ++k) out[x][k] += s * std::max(0.0f, 1.0f - inside[k]);
       }
     }

@@ -102,9 +102,11 @@ class GlareStage {
   std::unique_ptr<glare::FftConvolver> convolver_;     // exact engine
   std::unique_ptr<glare::SplitConvolver> split_;       // or the split one
   // Full mode: per component (core, inner, outer, halo), the share of the
-  // PSF centred at each pixel that falls inside the frame (CV_32FC3); off
-  // the frame's own plane, without the kept share and at moved_light's size.
+  // PSF centred at each pixel that falls inside the frame (CV_32FC3, or
+  // CV_32F when every channel holds the same); off the frame's own plane,
+  // without the kept share and at moved_light's size.
   std::vector<cv::Mat> in_frame_;
+  static cv::Mat one_channel_if_grey(const cv::Mat& map);
   // Per component (core, inner, outer, halo) and channel, the kernel's
   // centre pixel.
   cv::Vec3d centre_[4];
