@@ -44,6 +44,37 @@ TEST(FullGlare, AUniformFieldAndSurroundStayUniformToTheCorners) {
     }
 }
 
+// The same on an odd-sized frame seen at 54 px/deg (3 deg wide) with the
+// convolution at half that (the glare frame halved: the surround's light
+// added at half size and brought back with the kept light in one pass),
+// rectilinear and equidistant (whose full-resolution plane is the frame
+// itself), on one thread as on two.
+TEST(FullGlare, AUniformFieldStaysUniformOnAHalvedGlareFrameOfOddSize) {
+  constexpr int kOddW = 161, kOddH = 91;
+  const cv::Mat field = test::constant_frame(kOddW, kOddH, {100, 100, 100});
+  for (const char* projection : {"rectilinear", "equidistant"})
+    for (const double resolution : {0.5, 1.0})
+      for (const char* engine : {"exact", "split"})
+        for (const char* model : {"vos", "gaussian"}) {
+          Settings s = full_glare(engine, model);
+          s.geometry.fov_deg = 3.0;
+          s.geometry.projection = projection;
+          s.glare_resolution = resolution;
+          const std::string what = std::string(projection) + ", " + std::to_string(resolution) + ", " + engine + ", " + model;
+          GlareStage stage(test::plan_for(s, kOddW, kOddH));
+          const cv::Mat retinal = stage.apply(field, 2.0, 100.0);
+          EXPECT_LT(worst_relative(retinal, 100.0), 0.005) << what;
+          const int threads = cv::getNumThreads();
+          cv::setNumThreads(1);
+          const cv::Mat one = stage.apply(field, 2.0, 100.0);
+          cv::setNumThreads(threads);
+          EXPECT_EQ(cv::norm(retinal, one, cv::NORM_INF), 0.0) << what << ": one thread";
+          // A dark surround: the edges lose what scatters out, the centre less.
+          const cv::Mat dark = stage.apply(field, 2.0, 0.0);
+          EXPECT_LT(dark.at<cv::Vec3f>(0, 0)[1], dark.at<cv::Vec3f>(kOddH / 2, kOddW / 2)[1]) << what;
+        }
+}
+
 // Skipping: a neutral uniform field equal to its surround comes back as it
 // is; a coloured one does not (the grey surround scatters into its edges).
 TEST(FullGlare, OnlyANeutralUniformFieldEqualToItsSurroundIsSkipped) {

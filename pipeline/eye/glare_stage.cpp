@@ -40,6 +40,10 @@ GlareStage::GlareStage(const Plan& plan)
       plane_(glare_plane(plan)),
       ppd_(plane_->pixels_per_degree()) {
   const cv::Size plane = plane_->plane_size();
+  if (!halved_.empty()) {  // the halved glare frame's taps to the frame (spread())
+    up_cols_ = glare::linear_taps(0, plan.width, double(halved_.width) / plan.width, halved_.width);
+    up_rows_ = glare::linear_taps(0, plan.height, double(halved_.height) / plan.height, halved_.height);
+  }
   if (plan.glare.gaussian) {  // no kernels: a separable blur does the work
     const double sigma = plan.glare.gaussian_sigma_deg * ppd_;
     const cv::Mat g = cv::getGaussianKernel(cvRound(sigma * 8 + 1) | 1, sigma, CV_64F);  // GaussianBlur's, for floats
@@ -170,11 +174,10 @@ cv::Mat GlareStage::spread(const cv::Mat& rgb, const glare::PsfWeights& w, doubl
     });
     return moved;
   }
+  CV_Assert(moved.size() == halved_ && rgb.cols == int(up_cols_.size()) && rgb.rows == int(up_rows_.size()));
   cv::Mat out(rgb.size(), CV_32FC3);
-  const std::vector<glare::LinearTap> cols =
-      glare::linear_taps(0, out.cols, double(moved.cols) / out.cols, moved.cols);
-  const std::vector<glare::LinearTap> rows =
-      glare::linear_taps(0, out.rows, double(moved.rows) / out.rows, moved.rows);
+  const std::vector<glare::LinearTap>& cols = up_cols_;
+  const std::vector<glare::LinearTap>& rows = up_rows_;
   cv::parallel_for_(cv::Range(0, out.rows), [&](const cv::Range& range) {
     std::vector<cv::Vec3f> line(size_t(moved.cols));
     for (int y = range.start; y < range.end; ++y) {
@@ -206,7 +209,8 @@ cv::Mat GlareStage::spread_plane(const cv::Mat& rgb, const glare::PsfWeights& w)
 
 void GlareStage::add_surround(cv::Mat& light, const glare::PsfWeights& w, double surround) const {
   if (!(surround > 0.0) || in_frame_.empty()) return;
-  CV_Assert(light.size() == in_frame_[0].size());
+  CV_Assert(light.type() == CV_32FC3 && light.size() == in_frame_[0].size());
+  for (const cv::Mat& m : in_frame_) CV_Assert(m.depth() == CV_32F && m.isContinuous());
   const float s = float(surround);
   const float weights[4] = {float(w.core), float(w.inner), float(w.outer), float(w.halo)};
   // The maps hold the moved light only when the kept light is added later.
