@@ -2,40 +2,76 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <vector>
 
 #include "retina/hash_random.hpp"
 #include "retina/pow_table.hpp"
+#include "retina/vector_clones.hpp"
 
 namespace eyestream::retina {
 
 namespace {
 
+// One row's steps, each a plain loop over its values that the compiler
+// vectorises (vector_clones.hpp; no FMA: the same bytes either way).
+
+// Non-finite to 0, the rest clamped to [0, 1] (-0 to +0: the gamma table
+// reads the float's bits).
+EYESTREAM_VECTOR_CLONES
+void clamp_row(const float* in, float* out, int n) {
+  for (int i = 0; i < n; ++i) {
+    std::uint32_t bits;
+    std::memcpy(&bits, &in[i], sizeof bits);
+    const bool finite = (bits & 0x7f800000u) != 0x7f800000u;
+    float v = in[i] > 0.0f ? in[i] : 0.0f;  // (NaN fails the test: 0)
+    v = v < 1.0f ? v : 1.0f;
+    out[i] = finite ? v : 0.0f;
+  }
+}
+
+// The dither's three uniforms of each pixel (hash_uniform3 of its key).
+EYESTREAM_VECTOR_CLONES
+void dither_row(std::uint64_t row_key, int pixels, float* u) {
+  for (int x = 0; x < pixels; ++x) {
+    const std::uint64_t key = hash_pixel(row_key, std::uint64_t(x));
+    for (int c = 0; c < 3; ++c)
+      u[3 * x + c] = float(std::uint32_t((key >> (21 * c)) & 0x1fffffULL)) * (1.0f / 2097152.0f);
+  }
+}
+
+// v = g max_code, rounded up with probability equal to its fractional
+// part (docs/model.md), or to nearest without dither (u null).
+EYESTREAM_VECTOR_CLONES
+void quantise_row(const float* g, const float* u, float max_code, float* q, int n) {
+  if (u) {
+    for (int i = 0; i < n; ++i) {
+      const float v = g[i] * max_code, lo = float(int(v));  // (v >= 0: truncation is the floor)
+      const float up = (v - lo) > u[i] ? 1.0f : 0.0f;
+      const float code = lo + up;
+      q[i] = code < max_code ? code : max_code;
+    }
+  } else {
+    for (int i = 0; i < n; ++i) q[i] = std::min(std::nearbyint(g[i] * max_code), max_code);
+  }
+}
+
 template <typename T>
 void encode_rows(const cv::Mat& linear, std::int64_t frame, const EncodingParams& p, float max_code, cv::Mat& code) {
   const PowTable& gamma = shared_pow_table(p.gamma);  // 1e-7 relative: below 1e-2 of a 16-bit code
+  const int n = 3 * linear.cols;
   cv::parallel_for_(cv::Range(0, linear.rows), [&](const cv::Range& rows) {
+    const size_t values = static_cast<size_t>(n);
+    std::vector<float> j(values), g(values), u(p.dither ? values : 0), q(values);
     for (int y = rows.start; y < rows.end; ++y) {
-      const cv::Vec3f* in = linear.ptr<cv::Vec3f>(y);
+      clamp_row(linear.ptr<float>(y), j.data(), n);
+      gamma.batch(j.data(), g.data(), n);
+      if (p.dither)
+        dither_row(hash_row(p.seed, std::uint64_t(RandomStream::kDither), std::uint64_t(frame), std::uint64_t(y)),
+                   linear.cols, u.data());
+      quantise_row(g.data(), p.dither ? u.data() : nullptr, max_code, q.data(), n);
       T* out = code.ptr<T>(y);
-      const std::uint64_t row_key =
-          hash_row(p.seed, std::uint64_t(RandomStream::kDither), std::uint64_t(frame), std::uint64_t(y));
-      for (int x = 0; x < linear.cols; ++x) {
-        const std::uint64_t key = p.dither ? hash_pixel(row_key, std::uint64_t(x)) : 0;
-        for (int c = 0; c < 3; ++c) {
-          float j = in[x][c];
-          j = std::isfinite(j) ? std::clamp(j, 0.0f, 1.0f) : 0.0f;
-          const float v = gamma(j) * max_code;
-          float q;
-          if (p.dither) {
-            // docs/model.md: round up with probability equal to the fractional part.
-            const float lo = std::floor(v);
-            q = lo + ((v - lo) > hash_uniform3(key, c) ? 1.0f : 0.0f);
-          } else {
-            q = std::nearbyint(v);
-          }
-          out[3 * x + c] = T(std::min(q, max_code));
-        }
-      }
+      for (int i = 0; i < n; ++i) out[i] = T(q[i]);
     }
   });
 }

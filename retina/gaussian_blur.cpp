@@ -4,18 +4,13 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
+#include "retina/vector_clones.hpp"
+
 namespace eyestream::retina {
 
 namespace {
 
-// The sweeps are compiled for AVX2 beside the baseline and chosen when the
-// program starts (GCC's function multi-versioning): no FMA, so both give
-// the same bytes, the AVX2 one twice as many samples per instruction.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define EYESTREAM_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define EYESTREAM_VECTOR_CLONES
-#endif
+// The sweeps are compiled for AVX2 beside the baseline (vector_clones.hpp).
 
 // out[i] = sum_t w[t] (in[i - t c] + in[i + t c]) over the row's interior
 // samples; the r pixels at each end read replicated border pixels.

@@ -4,12 +4,36 @@
 #include <memory>
 #include <mutex>
 
+#include "retina/vector_clones.hpp"
+
 namespace eyestream::retina {
 
 PowTable::PowTable(double exponent) : exponent_(exponent), table_(size_t(kOctaves) * kSteps + 2) {
   for (size_t i = 0; i < table_.size(); ++i) {
     const double x = std::ldexp(1.0 + double(i % kSteps) / kSteps, int(i / kSteps) - kOctaves);
     table_[i] = float(std::pow(x, exponent));
+  }
+}
+
+EYESTREAM_VECTOR_CLONES
+void PowTable::batch(const float* x, float* y, int n) const {
+  const float* t = table_.data();
+  int below = 0;  // values under the table's least octave, other than 0
+  for (int i = 0; i < n; ++i) {
+    std::uint32_t bits;
+    std::memcpy(&bits, &x[i], sizeof bits);
+    const int octave = int(bits >> 23) - 127 + kOctaves;
+    const int under = octave < 0;
+    const std::uint32_t at = std::uint32_t(octave * (1 - under)) * kSteps + ((bits >> 13) & (kSteps - 1));
+    const float f = float(int(bits & 8191u)) * (1.0f / 8192.0f);
+    const float v = t[at] + f * (t[at + 1] - t[at]);
+    y[i] = under ? 0.0f : v;
+    below |= under & int(bits != 0);
+  }
+  if (below) {  // rare: std::pow, as operator() takes it
+    const float least = std::ldexp(1.0f, -kOctaves);
+    for (int i = 0; i < n; ++i)
+      if (x[i] > 0.0f && x[i] < least) y[i] = (*this)(x[i]);
   }
 }
 

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <vector>
 
+#include "retina/hash_random.hpp"
+#include "retina/pow_table.hpp"
 #include "tests/test_support.hpp"
 
 namespace eyestream::retina {
@@ -82,6 +84,44 @@ TEST(DisplayEncoding, DitherIsAFunctionOfSeedFrameAndPositionOnly) {
   EXPECT_EQ(cv::norm(a, b, cv::NORM_INF), 0.0);
   EXPECT_GT(cv::norm(a, c, cv::NORM_INF), 0.0);
   EXPECT_GT(cv::norm(a, d, cv::NORM_INF), 0.0);
+}
+
+// The encoding's vectorised rows (compiled for AVX2 where the machine has
+// it) give exactly the codes of the definition written out here value by
+// value: clamp (non-finite and -0 to 0), the gamma table (std::pow below
+// its least octave), the pixel's hash for the dither; on random values and
+// on the awkward ones, 8 and 16 bits, with and without dither.
+TEST(DisplayEncoding, TheVectorisedRowsGiveTheDefinitionsCodes) {
+  cv::Mat linear(23, 67, CV_32FC3);
+  cv::RNG rng(11);
+  rng.fill(linear, cv::RNG::UNIFORM, -0.1, 1.1);
+  const float awkward[] = {-0.0f, 0.0f, 1.0f, 1e-20f, 3e-13f, 1e-38f, 2.0f, -5.0f, NAN, INFINITY, -INFINITY, 0.5f};
+  for (size_t i = 0; i < sizeof awkward / sizeof *awkward; ++i) linear.at<float>(int(i % 5), int(i)) = awkward[i];
+  const PowTable& gamma = shared_pow_table(0.455);
+  for (const int bits : {8, 16})
+    for (const bool dither : {true, false}) {
+      const EncodingParams p{0.455, dither, 5};
+      cv::Mat code;
+      encode_display(linear, bits, 9, p, code);
+      const float max_code = bits == 8 ? 255.0f : 65535.0f;
+      int differ = 0;
+      for (int y = 0; y < linear.rows; ++y) {
+        const std::uint64_t row = hash_row(5, std::uint64_t(RandomStream::kDither), 9, std::uint64_t(y));
+        for (int x = 0; x < linear.cols; ++x)
+          for (int c = 0; c < 3; ++c) {
+            float j = linear.at<cv::Vec3f>(y, x)[c];
+            j = std::isfinite(j) && j > 0.0f ? std::min(j, 1.0f) : 0.0f;
+            const float v = gamma(j) * max_code;
+            const float lo = std::floor(v);
+            const float q = dither ? lo + ((v - lo) > hash_uniform3(hash_pixel(row, std::uint64_t(x)), c) ? 1.0f : 0.0f)
+                                   : std::nearbyint(v);
+            const double want = std::min(q, max_code);
+            const double got = bits == 8 ? code.at<cv::Vec3b>(y, x)[c] : code.at<cv::Vec3w>(y, x)[c];
+            differ += want != got;
+          }
+      }
+      EXPECT_EQ(differ, 0) << bits << " bits, dither " << dither;
+    }
 }
 
 TEST(DisplayEncoding, SixteenBitsUseTheFullRange) {

@@ -62,8 +62,9 @@ TEST(Eyelid, TheLidDarkensTheApertureAboveItsShadowWhichALightAboveLowers) {
       // 1.22 mm, plus half their width, and 13 mm of depth times the
       // light's tangent further) the lid changes nothing.
       const double lashes = 1.3 + 13.0 * std::max(0.0, -std::tan(light_deg * M_PI / 180.0));
-      if (y > -kMrd1 + lashes + sample_mm && y > shadow + sample_mm)
+      if (y > -kMrd1 + lashes + sample_mm && y > shadow + sample_mm) {
         ASSERT_EQ(row_power(with, r), row_power(without, r)) << light_deg << " deg, " << y << " mm";
+      }
     }
     EXPECT_GT(dark_rows, light_deg > 0.0 ? 5 : 20) << light_deg << " deg";
     EXPECT_EQ(lit_rows_above, 0) << light_deg << " deg: the lid above its shadow";
