@@ -22,6 +22,7 @@ void PowTable::batch(const float* x, float* y, int n) const {
   for (int i = 0; i < n; ++i) {
     std::uint32_t bits;
     std::memcpy(&bits, &x[i], sizeof bits);
+    bits &= 0x7fffffffu;  // -0 as 0
     const int octave = int(bits >> 23) - 127 + kOctaves;
     const int under = octave < 0;
     const std::uint32_t at = std::uint32_t(octave * (1 - under)) * kSteps + ((bits >> 13) & (kSteps - 1));

@@ -21,6 +21,7 @@ class PowTable {
   float operator()(float x) const {
     std::uint32_t bits;
     std::memcpy(&bits, &x, sizeof bits);
+    bits &= 0x7fffffffu;  // -0 as 0 (its sign bit would index past the table)
     const int octave = int(bits >> 23) - 127 + kOctaves;  // x in [2^(octave - 40), 2^(octave - 39))
     if (octave < 0) return x > 0.0f ? float(std::pow(double(x), exponent_)) : 0.0f;
     const std::uint32_t i = std::uint32_t(octave) * kSteps + ((bits >> 13) & (kSteps - 1));

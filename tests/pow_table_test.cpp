@@ -24,6 +24,13 @@ TEST(PowTable, MatchesPowWithinItsStatedError) {
     EXPECT_EQ(table(1.0f), 1.0f);
     for (float x : {1.5f, 3.0f, 1e3f, 1e9f})  // above 1, by the inverse
       EXPECT_NEAR(table.any(x), std::pow(double(x), p), 4e-7 * std::pow(double(x), p)) << x;
+    EXPECT_EQ(table(-0.0f), 0.0f) << "-0, whose sign bit once indexed past the table";
+    // A row at a call gives what one value at a call does, below the
+    // table's least octave too.
+    const float xs[] = {0.0f, -0.0f, 1.0f, 0.5f, 1e-20f, 1e-38f, 3e-13f, 0.123456f, 0.999f};
+    float ys[sizeof xs / sizeof *xs];
+    table.batch(xs, ys, int(sizeof xs / sizeof *xs));
+    for (size_t i = 0; i < sizeof xs / sizeof *xs; ++i) EXPECT_EQ(ys[i], table(xs[i])) << xs[i];
   }
 }
 
