@@ -35,8 +35,7 @@ EYESTREAM_VECTOR_CLONES
 void dither_row(std::uint64_t row_key, int pixels, float* u) {
   for (int x = 0; x < pixels; ++x) {
     const std::uint64_t key = hash_pixel(row_key, std::uint64_t(x));
-    for (int c = 0; c < 3; ++c)
-      u[3 * x + c] = float(std::uint32_t((key >> (21 * c)) & 0x1fffffULL)) * (1.0f / 2097152.0f);
+    for (int c = 0; c < 3; ++c) u[3 * x + c] = hash_uniform3(key, c);
   }
 }
 

@@ -28,7 +28,8 @@ inline float hash_uniform(std::uint64_t key) { return float(key >> 40) * (1.0f /
 // The k-th (0, 1, 2) of three uniforms in [0, 1) with 21 bits each, drawn
 // from one 64-bit key: one hash serves the three channels of a pixel.
 inline float hash_uniform3(std::uint64_t key, int k) {
-  return float((key >> (21 * k)) & 0x1fffffULL) * (1.0f / 2097152.0f);
+  // (21 bits fit 32: a 32-bit conversion, which vector units have)
+  return float(std::uint32_t((key >> (21 * k)) & 0x1fffffULL)) * (1.0f / 2097152.0f);
 }
 
 // The per-row part of hash_key for (seed, stream, frame, y); finish a pixel
