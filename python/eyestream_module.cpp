@@ -135,7 +135,22 @@ struct PyEye {
     d["peak_cd_m2"] = r.peak_cd_m2;
     d["veil_cd_m2"] = r.veil_cd_m2;
     d["ti_percent"] = r.ti_percent;
+    d["target_cd_m2"] = r.target_cd_m2;
+    d["background_cd_m2"] = r.background_cd_m2;
+    d["target_veil_cd_m2"] = r.target_veil_cd_m2;
+    d["nonfinite_pixels"] = r.nonfinite_pixels;
+    d["glare_ms"] = r.glare_ms;
+    d["adaptation_ms"] = r.adaptation_ms;
+    d["retina_ms"] = r.retina_ms;
+    d["mesopic_ms"] = r.mesopic_ms;
+    d["afterimage_ms"] = r.afterimage_ms;
     return d;
+  }
+
+  void set_gaze(const py::object& recording) {
+    const std::vector<eyestream::Gaze> samples = gaze_samples(recording);
+    const std::lock_guard<std::mutex> one_at_a_time(busy);
+    eye.set_gaze(samples);
   }
 
   py::array code() const {
@@ -248,6 +263,10 @@ PYBIND11_MODULE(eyestream, m) {
            "frame: HxWx3 linear Rec.709 RGB in cd/m^2 (float32 with packed pixels is read in place, anything\n"
            "else converted). gaze: the samples (t, x, y[, closed[, lost[, pupil_mm]]]) inside the frame's interval\n"
            "[n / fps, (n + 1) / fps), in seconds and frame pixels; without samples the last gaze holds.")
+      .def("set_gaze", &PyEye::set_gaze, py::arg("recording"),
+           "set_gaze(recording): the whole gaze recording, samples (t, x, y[, closed[, lost[, pupil_mm]]]), read\n"
+           "as the command line reads a log (the first sample held back to frame 0, recorded pupils bridged\n"
+           "across blinks); process() then takes no gaze. An empty recording goes back to gaze per frame.")
       .def_property_readonly("code", &PyEye::code,
                              "the last frame encoded for the display and dithered (uint8 HxWx3; uint16 with png_bits=16)")
       .def_property_readonly("report", &PyEye::report, "what happened to the last frame (a dict)")

@@ -1,6 +1,7 @@
 // The source tree's floors: io, retina and glare never include each other
-// or pipeline; inside pipeline, geometry < settings < eye < report < preview <
-// run < bench < tools < api, and a folder includes only its own floor and those below it.
+// or pipeline; inside pipeline, geometry < settings < eye < api < report <
+// preview < run < bench < tools < library, and a folder includes only its
+// own floor and those below it.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -44,9 +45,9 @@ TEST(Layout, EveryFolderIncludesOnlyItsOwnFloorAndThoseBelow) {
   // include one another.
   const std::map<std::string, int> rank = {
       {"io", 0},           {"retina", 0},         {"glare", 0},       {"samples", 1},
-      {"pipeline/geometry", 2}, {"pipeline/settings", 3}, {"pipeline/eye", 4}, {"pipeline/report", 5},
-      {"pipeline/preview", 6}, {"pipeline/run", 7},  {"pipeline/bench", 8}, {"pipeline/tools", 9},
-      {"pipeline/api", 10}, {"pipeline", 11}};
+      {"pipeline/geometry", 2}, {"pipeline/settings", 3}, {"pipeline/eye", 4}, {"pipeline/api", 5},
+      {"pipeline/report", 6},  {"pipeline/preview", 7},  {"pipeline/run", 8},  {"pipeline/bench", 9},
+      {"pipeline/tools", 10},  {"pipeline/library", 11}, {"pipeline", 12}};
   int checked = 0;
   for (const std::string top : {"io", "retina", "glare", "samples", "pipeline"})
     for (const auto& e : fs::recursive_directory_iterator(root / top)) {

@@ -83,6 +83,61 @@ TEST(LibraryApi, AnEyeComputesWhatTheCommandLineComputes) {
   }
 }
 
+// The whole recording handed over at once (set_gaze) is read as the
+// command line reads its log: the first sample (at 50 ms, in frame 1) held
+// back to frame 0, the recorded pupil bridged across the blink, and the
+// target's luminances in the report; the frames are the command line's
+// byte for byte.
+TEST(LibraryApi, AWholeRecordingGivesTheCommandLinesFramesAndReport) {
+  test::ScratchDir dir;
+  ASSERT_EQ(test::run_eyestream("sample headlights -o " + (dir / "h") + " --width 64 --height 36 --duration 0.4")
+                .exit_code,
+            0);
+  std::string csv = "t,x,y,event,pupil_mm\n";
+  std::vector<Gaze> recording;
+  for (int i = 5; i < 40; ++i) {
+    const double t = 0.01 * i;
+    const bool blink = t >= 0.145 && t < 0.205;
+    char line[96];
+    if (blink) std::snprintf(line, sizeof line, "%.3f,,,blink,\n", t);
+    else std::snprintf(line, sizeof line, "%.3f,%.1f,%.1f,,%.2f\n", t, 50.0 - 1.1 * i, 20.0 - 0.3 * i, 3.0 + 0.05 * i);
+    csv += line;
+    recording.push_back({t, blink ? 0.0 : 50.0 - 1.1 * i, blink ? 0.0 : 20.0 - 0.3 * i, blink, false,
+                         blink ? NAN : 3.0 + 0.05 * i});
+  }
+  std::ofstream(dir / "g.csv") << csv;
+  const std::string options = " --quality fast --pupil-from-gaze --target 20,10,8,6";
+  const auto r = test::run_eyestream("run -i " + (dir / "h/frames") + " -g " + (dir / "g.csv") + " -o " +
+                                     (dir / "e/%05d.exr") + " --report " + (dir / "r.csv") + options);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto rows = test::csv_rows(dir / "r.csv");
+  const Clip clip = load_clip(dir);
+  ASSERT_EQ(rows.size(), clip.frames.size());
+  const std::map<std::string, std::string> settings = {
+      {"quality", "fast"}, {"pupil-from-gaze", "true"}, {"target", "20,10,8,6"}, {"report", "true"}};
+  Eye eye(64, 36, clip.fps, settings), framewise(64, 36, clip.fps, settings);
+  eye.set_gaze(recording);
+  for (size_t i = 0; i < clip.frames.size(); ++i) {
+    const Frame out = eye.process(clip.frames[i]);
+    char name[32];
+    std::snprintf(name, sizeof name, "e/%05d.exr", int(i));
+    ASSERT_EQ(cv::norm(out.linear, io::read_exr(dir / name, 1 << 20).rgb, cv::NORM_INF), 0.0) << "frame " << i;
+    const FrameReport& a = out.report;
+    EXPECT_NEAR(a.pupil_mm, std::stod(rows[i].at("pupil_mm")), 1e-5 * a.pupil_mm) << "frame " << i;
+    EXPECT_NEAR(a.target_cd_m2, std::stod(rows[i].at("target_cd_m2")), 1e-5 * a.target_cd_m2) << "frame " << i;
+    EXPECT_NEAR(a.background_cd_m2, std::stod(rows[i].at("background_cd_m2")), 1e-5 * a.background_cd_m2);
+    EXPECT_GT(a.target_cd_m2, 0.0);
+    EXPECT_GT(a.glare_ms + a.adaptation_ms + a.retina_ms + a.mesopic_ms + a.afterimage_ms, 0.0);
+    EXPECT_EQ(a.nonfinite_pixels, 0);
+  }
+  // Frame by frame, frame 0 has no sample yet and looks at the centre: the
+  // whole recording is what makes the first frame the command line's.
+  const Frame first = framewise.process(clip.frames[0]);
+  EXPECT_EQ(first.report.gaze_x, 32.0);
+  EXPECT_NE(std::stod(rows[0].at("gaze_x")), 32.0);
+  EXPECT_THROW(eye.process(clip.frames[0], {{0.5, 1.0, 1.0}}), Error) << "samples beside a recording";
+}
+
 TEST(LibraryApi, TheFramesReportHasTheCommandLinesVeilAndTi) {
   test::ScratchDir dir;
   ASSERT_EQ(test::run_eyestream("sample headlights -o " + (dir / "h") + " --width 64 --height 36 --duration 0.3")

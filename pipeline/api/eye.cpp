@@ -1,52 +1,71 @@
 #include "eyestream/eye.hpp"
 
-#include "api_settings.hpp"
+#include "pipeline/api/api_settings.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <nlohmann/json.hpp>
+#include <optional>
 
+#include "pipeline/api/eye_access.hpp"
 #include "io/error.hpp"
 #include "io/frame_source.hpp"
 #include "pipeline/eye/eye_simulator.hpp"
 #include "pipeline/eye/gaze_timeline.hpp"
-#include "pipeline/settings/parameter.hpp"
+#include "pipeline/eye/target_region.hpp"
 #include "pipeline/settings/plan.hpp"
-#include "pipeline/settings/quality_presets.hpp"
 #include "pipeline/settings/settings.hpp"
-#include "pipeline/tools/psf_command.hpp"
 #include "retina/display_encoding.hpp"
 
 namespace eyestream {
 
 namespace {
 
+// The API's samples as the gaze reader gives them; `what` names them in
+// the error.
+std::vector<io::GazeSample> gaze_samples(const std::vector<Gaze>& gaze, const std::string& what) {
+  std::vector<io::GazeSample> samples;
+  for (const Gaze& g : gaze) {
+    if (!std::isfinite(g.t_s) || !std::isfinite(g.x) || !std::isfinite(g.y))
+      throw UsageError("a gaze sample of " + what + " is not finite");
+    // A diameter of 0 or less (how trackers mark a missing pupil) is none.
+    const double pupil = std::isfinite(g.pupil_mm) && g.pupil_mm > 0.0 ? g.pupil_mm : NAN;
+    samples.push_back({g.t_s, g.x, g.y,
+                       g.closed ? io::EyeState::kClosed : g.lost ? io::EyeState::kLost : io::EyeState::kOpen, pupil});
+  }
+  std::stable_sort(samples.begin(), samples.end(),
+                   [](const io::GazeSample& a, const io::GazeSample& b) { return a.t_s < b.t_s; });
+  return samples;
+}
 
 }  // namespace
 
 struct Eye::Impl {
   pipeline::Plan plan;
   pipeline::EyeSimulator eye;
+  pipeline::TargetRegion target;
   int bits = 8;  // of the encoded frame
   std::int64_t index = 0;
-  // The gaze carried from earlier frames: the last sample with a position,
-  // then the last sample when it is a blink or lost (which hold that
-  // position), as the command line's timeline of the whole log has them.
+  // set_gaze's recording, read as the command line reads a whole log.
+  std::optional<pipeline::GazeTimeline> recording;
+  // Without one, the gaze carried from earlier frames: the last sample with
+  // a position, then the last sample when it is a blink or lost (which
+  // hold that position), as the timeline of the whole log has them.
   std::vector<io::GazeSample> carried;
+  pipeline::FrameReport last;       // the last frame's
+  double last_recorded_pupil = NAN;  // the pupil the last frame's optics took from the gaze, if any
 
-  Impl(pipeline::Plan p) : plan(p), eye(std::move(p)) {}
+  Impl(pipeline::Plan p, const pipeline::Settings& s)
+      : plan(p), eye(std::move(p)), target(s.target_rect, s.target_mask, cv::Size(plan.width, plan.height)),
+        bits(s.sink.png_bits) {}
 
   std::vector<pipeline::GazeSegment> segments(const std::vector<Gaze>& gaze, double t0, double t1) {
-    std::vector<io::GazeSample> samples = carried;
-    for (const Gaze& g : gaze) {
-      if (!std::isfinite(g.t_s) || !std::isfinite(g.x) || !std::isfinite(g.y))
-        throw UsageError("a gaze sample of frame " + std::to_string(index) + " is not finite");
-      // A diameter of 0 or less (how trackers mark a missing pupil) is none.
-      const double pupil = std::isfinite(g.pupil_mm) && g.pupil_mm > 0.0 ? g.pupil_mm : NAN;
-      samples.push_back({g.t_s, g.x, g.y,
-                         g.closed ? io::EyeState::kClosed : g.lost ? io::EyeState::kLost : io::EyeState::kOpen,
-                         pupil});
+    if (recording) {
+      if (!gaze.empty())
+        throw UsageError("frame " + std::to_string(index) + ": gaze samples given to an eye holding a recording (set_gaze)");
+      return recording->segments(t0, t1);
     }
+    std::vector<io::GazeSample> samples = carried;
+    for (const io::GazeSample& g : gaze_samples(gaze, "frame " + std::to_string(index))) samples.push_back(g);
     std::stable_sort(samples.begin(), samples.end(),
                      [](const io::GazeSample& a, const io::GazeSample& b) { return a.t_s < b.t_s; });
     const pipeline::GazeTimeline timeline(samples, plan.width / 2.0, plan.height / 2.0);
@@ -63,6 +82,45 @@ struct Eye::Impl {
     }
     return timeline.segments(t0, t1);
   }
+
+  // The one path through the model, for the API and the command line.
+  io::DisplayFrame step(const io::SceneFrame& scene, const std::vector<pipeline::GazeSegment>& segments) {
+    last = pipeline::FrameReport();
+    io::DisplayFrame shown = eye.process(scene, segments, &last, target.mask(scene.index));
+    last_recorded_pupil = plan.pupil_from_gaze ? segments.front().recorded_pupil_mm : NAN;
+    index = scene.index + 1;
+    return shown;
+  }
+
+  FrameReport public_report() const {
+    const pipeline::FrameReport& r = last;
+    const double model = eye.save().pupil_mm.value_or(0.0);
+    FrameReport out{std::pow(10.0, r.adaptation_log),
+                    std::isfinite(last_recorded_pupil) ? last_recorded_pupil : model,
+                    model,
+                    r.gaze_x,
+                    r.gaze_y,
+                    r.eye_closed,
+                    r.active.glare,
+                    r.active.retina,
+                    r.active.mesopic,
+                    r.active.afterimages};
+    if (plan.report) {
+      out.peak_cd_m2 = r.peak_cd_m2;
+      out.veil_cd_m2 = r.veil_cd_m2;
+      out.ti_percent = r.ti_percent;
+      out.target_cd_m2 = r.target_cd_m2;
+      out.background_cd_m2 = r.background_cd_m2;
+      out.target_veil_cd_m2 = r.target_veil_cd_m2;
+    }
+    out.nonfinite_pixels = r.nonfinite_pixels;
+    out.glare_ms = r.times.glare_ms;
+    out.adaptation_ms = r.times.adaptation_ms;
+    out.retina_ms = r.times.retina_ms;
+    out.mesopic_ms = r.times.mesopic_ms;
+    out.afterimage_ms = r.times.afterimage_ms;
+    return out;
+  }
 };
 
 Eye::Eye(int width, int height, double fps, const std::map<std::string, std::string>& settings) {
@@ -75,12 +133,12 @@ Eye::Eye(int width, int height, double fps, const std::map<std::string, std::str
     info.height = height;
     info.frames_per_second = fps;
     const pipeline::Settings s = compile_settings(settings);
-    impl_ = std::make_unique<Impl>(pipeline::compile_plan(s, info));
-    impl_->bits = s.sink.png_bits;
+    impl_ = std::make_unique<Impl>(pipeline::compile_plan(s, info), s);
     return 0;
   });
 }
 
+Eye::Eye(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 Eye::~Eye() = default;
 Eye::Eye(Eye&&) noexcept = default;
 Eye& Eye::operator=(Eye&&) noexcept = default;
@@ -90,29 +148,27 @@ int Eye::height() const { return impl_->plan.height; }
 double Eye::fps() const { return impl_->plan.frames_per_second; }
 std::string Eye::describe() const { return impl_->plan.describe(); }
 
+void Eye::set_gaze(const std::vector<Gaze>& recording) {
+  translated([&] {
+    impl_->carried.clear();
+    if (recording.empty()) impl_->recording.reset();
+    else impl_->recording.emplace(gaze_samples(recording, "the recording"), width() / 2.0, height() / 2.0);
+    return 0;
+  });
+}
+
 Frame Eye::process(const cv::Mat& rgb, const std::vector<Gaze>& gaze) {
   return translated([&] {
     if (rgb.type() != CV_32FC3 || rgb.cols != width() || rgb.rows != height())
       throw UsageError("frame " + std::to_string(impl_->index) + " is not a " + std::to_string(width()) +
                                  "x" + std::to_string(height()) + " float RGB image");
-    const double t0 = double(impl_->index) / fps(), t1 = double(impl_->index + 1) / fps();
-    const io::SceneFrame scene{rgb, t0, impl_->index, "frame " + std::to_string(impl_->index)};
-    pipeline::FrameReport r;
-    const std::vector<pipeline::GazeSegment> segments = impl_->segments(gaze, t0, t1);
-    io::DisplayFrame shown = impl_->eye.process(scene, segments, &r);
+    const std::int64_t n = impl_->index;
+    const double t0 = double(n) / fps(), t1 = double(n + 1) / fps();
+    const io::SceneFrame scene{rgb, t0, n, "frame " + std::to_string(n)};
     Frame out;
-    out.linear = shown.linear;
-    retina::encode_display(out.linear, impl_->bits, impl_->index, impl_->plan.encoding, out.code);
-    const double model = impl_->eye.save().pupil_mm.value_or(0.0);
-    const double recorded = impl_->plan.pupil_from_gaze ? segments.front().recorded_pupil_mm : NAN;
-    out.report = {std::pow(10.0, r.adaptation_log), std::isfinite(recorded) ? recorded : model, model, r.gaze_x,
-                  r.gaze_y, r.eye_closed, r.active.glare, r.active.retina, r.active.mesopic, r.active.afterimages};
-    if (impl_->plan.report) {
-      out.report.peak_cd_m2 = r.peak_cd_m2;
-      out.report.veil_cd_m2 = r.veil_cd_m2;
-      out.report.ti_percent = r.ti_percent;
-    }
-    ++impl_->index;
+    out.linear = impl_->step(scene, impl_->segments(gaze, t0, t1)).linear;
+    retina::encode_display(out.linear, impl_->bits, n, impl_->plan.encoding, out.code);
+    out.report = impl_->public_report();
     return out;
   });
 }
@@ -164,19 +220,29 @@ void Eye::restore(const State& s) {
   });
 }
 
-Psf psf(int width, int height, double adaptation_cd_m2, const std::map<std::string, std::string>& settings) {
-  return translated([&] {
-    if (width < 1 || height < 1 || !(adaptation_cd_m2 > 0.0) || !std::isfinite(adaptation_cd_m2))
-      throw UsageError("psf: needs a positive frame size and adaptation luminance, not " + std::to_string(width) +
-                       "x" + std::to_string(height) + " at " + std::to_string(adaptation_cd_m2) + " cd/m^2");
-    const pipeline::ViewerPsf v =
-        pipeline::viewer_psf(compile_settings(settings), width, height, std::log10(adaptation_cd_m2));
-    Psf out;
-    out.kernel = v.kernel;
-    out.pixels_per_degree = v.pixels_per_degree;
-    out.pupil_mm = v.summary.pupil_mm;
-    return out;
-  });
+namespace detail {
+
+Eye EyeAccess::make(const pipeline::Settings& settings, const io::SourceInfo& source) {
+  return Eye(std::make_unique<Eye::Impl>(pipeline::compile_plan(settings, source), settings));
 }
+
+void EyeAccess::set_gaze(Eye& eye, std::vector<io::GazeSample> recording) {
+  eye.impl_->carried.clear();
+  eye.impl_->recording.emplace(recording, eye.width() / 2.0, eye.height() / 2.0);
+}
+
+io::DisplayFrame EyeAccess::process(Eye& eye, const io::SceneFrame& frame, double t1_s) {
+  Eye::Impl& e = *eye.impl_;
+  return e.step(frame, e.recording ? e.recording->segments(frame.time_s, t1_s)
+                                   : pipeline::GazeTimeline({}, e.plan.width / 2.0, e.plan.height / 2.0)
+                                         .segments(frame.time_s, t1_s));
+}
+
+const pipeline::FrameReport& EyeAccess::report(const Eye& eye) { return eye.impl_->last; }
+const pipeline::Plan& EyeAccess::plan(const Eye& eye) { return eye.impl_->plan; }
+const pipeline::EyeSimulator& EyeAccess::simulator(const Eye& eye) { return eye.impl_->eye; }
+void EyeAccess::restore(Eye& eye, const pipeline::EyeMemory& memory) { eye.impl_->eye.restore(memory); }
+
+}  // namespace detail
 
 }  // namespace eyestream

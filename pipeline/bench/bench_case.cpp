@@ -1,6 +1,6 @@
 #include "pipeline/bench/bench_case.hpp"
 
-#include "pipeline/eye/eye_simulator.hpp"
+#include "pipeline/api/eye_access.hpp"
 #include "pipeline/bench/peak_memory.hpp"
 #include "retina/display_encoding.hpp"
 
@@ -11,13 +11,14 @@ BenchCase run_bench_case(const BenchScene& scene, const Settings& settings) {
   reset_peak_resident();
   const double resident_before = resident_mib();
   auto clock = std::chrono::steady_clock::now();
-  const Plan plan = compile_plan(settings, scene.info);
-  EyeSimulator eye(plan);
+  Eye eye = detail::EyeAccess::make(settings, scene.info);
+  detail::EyeAccess::set_gaze(eye, scene.gaze);
+  const Plan& plan = detail::EyeAccess::plan(eye);
   c.setup_s = lap_ms(clock) / 1000.0;
   cv::Mat code;
   for (size_t i = 0; i < scene.frames.size(); ++i) {
-    FrameReport r;
-    io::DisplayFrame out = eye.process(scene.frames[i], scene.segments[i], &r);
+    io::DisplayFrame out = detail::EyeAccess::process(eye, scene.frames[i], scene.ends_s[i]);
+    const FrameReport& r = detail::EyeAccess::report(eye);
     lap_ms(clock);
     retina::encode_display(out.linear, 8, scene.frames[i].index, plan.encoding, code);
     c.encode_ms += lap_ms(clock);
@@ -36,9 +37,10 @@ BenchCase run_bench_case(const BenchScene& scene, const Settings& settings) {
   c.filter_ms /= n;
   c.encode_ms /= n;
   c.stage_ms *= 1.0 / n;
-  c.bleached = eye.retina().state().bleached().clone();
-  c.deficit = eye.retina().state().deficit().clone();
-  c.calcium_max = eye.retina().state().calcium_max();
+  const RetinaStage& retina = detail::EyeAccess::simulator(eye).retina();
+  c.bleached = retina.state().bleached().clone();
+  c.deficit = retina.state().deficit().clone();
+  c.calcium_max = retina.state().calcium_max();
   c.sites_per_pixel = plan.retina.sites_per_pixel;
   return c;
 }

@@ -48,14 +48,14 @@ BenchScene load_bench_scene(const std::string& scene, int width, int height, int
   io::GazeImportOptions g;
   g.frame_width = width;
   g.frame_height = height;
-  const GazeTimeline timeline(io::read_gaze((dir.path / "gaze.csv").string(), g), width / 2.0, height / 2.0);
+  b.gaze = io::read_gaze((dir.path / "gaze.csv").string(), g);
   while (auto f = source->next()) {
     f->rgb = f->rgb.clone();
     b.frames.push_back(std::move(*f));
   }
   for (size_t i = 0; i < b.frames.size(); ++i) {
     const double t1 = i + 1 < b.frames.size() ? b.frames[i + 1].time_s : b.frames[i].time_s + 1.0 / kFps;
-    b.segments.push_back(timeline.segments(b.frames[i].time_s, t1));
+    b.ends_s.push_back(t1);
   }
   return b;
 }

@@ -7,7 +7,7 @@
 
 #include "io/frame.hpp"
 #include "io/frame_source.hpp"
-#include "pipeline/eye/gaze_timeline.hpp"
+#include "io/gaze_sample.hpp"
 
 namespace eyestream::pipeline {
 
@@ -15,8 +15,8 @@ struct BenchScene {
   std::string name;  // as `eyestream sample` knows it
   io::SourceInfo info;
   std::vector<io::SceneFrame> frames;
-  // The gaze during each frame's interval.
-  std::vector<std::vector<GazeSegment>> segments;
+  std::vector<io::GazeSample> gaze;  // the scene's whole gaze log
+  std::vector<double> ends_s;        // where each frame's interval ends
 };
 
 // Renders `frames` frames of the scene at width x height and 30 fps (the

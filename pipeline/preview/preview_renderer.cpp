@@ -8,52 +8,54 @@ namespace eyestream::pipeline {
 PreviewRenderer::PreviewRenderer(const Settings& s, const io::SourceInfo& source, io::SinkNeeds needs)
     : needs_(needs) {
   for (PanelSpec& spec : panel_specs(s)) {
-    Plan plan = compile_plan(spec.settings, source);
-    plan.report = plan.report && spec.viewer;
-    auto eye = std::make_unique<EyeSimulator>(plan);
-    panels_.push_back({std::move(spec), std::move(plan), std::move(eye), FrameReport()});
+    if (!spec.viewer) spec.settings.report.clear();  // a reference panel has no report
+    Eye eye = detail::EyeAccess::make(spec.settings, source);
+    panels_.push_back({std::move(spec), std::move(eye)});
   }
   options_.labels = s.labels;
   options_.gaze = s.gaze_overlay;
   options_.timecode = s.timecode;
-  options_.marker_radius_px = panels_[0].plan.pixels_per_degree;  // 1 deg: around, not over, the fixated object
+  options_.marker_radius_px = plan(0).pixels_per_degree;  // 1 deg: around, not over, the fixated object
 }
 
-io::DisplayFrame PreviewRenderer::process(const io::SceneFrame& frame, const std::vector<GazeSegment>& segments,
-                                          const cv::Mat& target_mask) {
+void PreviewRenderer::set_gaze(const std::vector<io::GazeSample>& recording) {
+  for (Panel& p : panels_) detail::EyeAccess::set_gaze(p.eye, recording);
+}
+
+io::DisplayFrame PreviewRenderer::process(const io::SceneFrame& frame, double t1_s) {
   std::vector<PanelView> views;
   for (Panel& p : panels_) {
-    p.report = FrameReport();
-    io::DisplayFrame seen = p.eye->process(frame, segments, &p.report, target_mask);
-    views.push_back({seen.linear, p.spec.label, p.report.gaze_x, p.report.gaze_y, p.report.eye_closed});
+    io::DisplayFrame seen = detail::EyeAccess::process(p.eye, frame, t1_s);
+    const FrameReport& r = detail::EyeAccess::report(p.eye);
+    views.push_back({seen.linear, p.spec.label, r.gaze_x, r.gaze_y, r.eye_closed});
   }
   io::DisplayFrame out;
   out.index = frame.index;
   out.time_s = frame.time_s;
   out.linear = compose_preview(views, options_, frame.time_s, frame.index);
   if (needs_ == io::SinkNeeds::kPq16)
-    encode_hdr10(out.linear, panels_[0].plan.glare.display_peak_cd_m2, out.code);
+    encode_hdr10(out.linear, plan(0).glare.display_peak_cd_m2, out.code);
   else if (needs_ != io::SinkNeeds::kLinear)
     retina::encode_display(out.linear, needs_ == io::SinkNeeds::kCode16 ? 16 : 8, frame.index,
-                           panels_[0].plan.encoding, out.code);
+                           plan(0).encoding, out.code);
   return out;
 }
 
 std::vector<EyeMemory> PreviewRenderer::save() const {
   std::vector<EyeMemory> out;
-  for (const Panel& p : panels_) out.push_back(p.eye->save());
+  for (size_t i = 0; i < panels_.size(); ++i) out.push_back(eye(i).save());
   return out;
 }
 
 void PreviewRenderer::restore(const std::vector<EyeMemory>& memories) {
   CV_Assert(memories.size() == panels_.size());
-  for (size_t i = 0; i < panels_.size(); ++i) panels_[i].eye->restore(memories[i]);
+  for (size_t i = 0; i < panels_.size(); ++i) detail::EyeAccess::restore(panels_[i].eye, memories[i]);
 }
 
 std::string PreviewRenderer::memory_error(const std::vector<EyeMemory>& memories) const {
   if (memories.size() != panels_.size()) return "panels";
   for (size_t i = 0; i < panels_.size(); ++i) {
-    const std::string e = panels_[i].eye->memory_error(memories[i]);
+    const std::string e = eye(i).memory_error(memories[i]);
     if (!e.empty()) return "panel " + std::to_string(i + 1) + ": " + e;
   }
   return "";
@@ -66,9 +68,9 @@ size_t PreviewRenderer::main_panel() const {
 }
 
 std::string PreviewRenderer::describe() const {
-  if (panels_.size() == 1) return panels_[0].plan.describe();
+  if (panels_.size() == 1) return panels_[0].eye.describe();
   std::string text;
-  for (const Panel& p : panels_) text += "[panel: " + p.spec.label + "]\n" + p.plan.describe();
+  for (const Panel& p : panels_) text += "[panel: " + p.spec.label + "]\n" + p.eye.describe();
   return text;
 }
 

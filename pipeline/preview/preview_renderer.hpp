@@ -1,5 +1,6 @@
-// Every panel's eye (viewer_panels.hpp) over the same input, composed into
-// one display frame (preview.hpp) and encoded for the sink.
+// Every panel's eye (viewer_panels.hpp; an eyestream::Eye of the library
+// API) over the same input, composed into one display frame (preview.hpp)
+// and encoded for the sink.
 #pragma once
 
 #include <memory>
@@ -8,7 +9,8 @@
 
 #include "io/frame_sink.hpp"
 #include "io/frame_source.hpp"
-#include "pipeline/eye/eye_simulator.hpp"
+#include "io/gaze_sample.hpp"
+#include "pipeline/api/eye_access.hpp"
 #include "pipeline/preview/preview.hpp"
 #include "pipeline/preview/viewer_panels.hpp"
 
@@ -18,16 +20,19 @@ class PreviewRenderer {
  public:
   PreviewRenderer(const Settings& settings, const io::SourceInfo& source, io::SinkNeeds needs);
 
-  // Steps every panel's eye through the frame's interval and returns the
-  // composed frame, encoded when the sink needs codes. report(i) then
-  // holds panel i's FrameReport.
-  io::DisplayFrame process(const io::SceneFrame& frame, const std::vector<GazeSegment>& segments,
-                           const cv::Mat& target_mask);
+  // Every eye takes its gaze from the whole recording (none: the frame's
+  // centre), as eyestream::Eye::set_gaze.
+  void set_gaze(const std::vector<io::GazeSample>& recording);
+  // Steps every panel's eye through the frame's interval [frame.time_s,
+  // t1_s) and returns the composed frame, encoded when the sink needs
+  // codes. report(i) then holds panel i's FrameReport.
+  io::DisplayFrame process(const io::SceneFrame& frame, double t1_s);
 
   size_t panels() const { return panels_.size(); }
   const PanelSpec& spec(size_t i) const { return panels_[i].spec; }
-  const FrameReport& report(size_t i) const { return panels_[i].report; }
-  const EyeSimulator& eye(size_t i) const { return *panels_[i].eye; }
+  const FrameReport& report(size_t i) const { return detail::EyeAccess::report(panels_[i].eye); }
+  const Plan& plan(size_t i) const { return detail::EyeAccess::plan(panels_[i].eye); }
+  const EyeSimulator& eye(size_t i) const { return detail::EyeAccess::simulator(panels_[i].eye); }
   // Checkpoints: every panel's memory, and back.
   std::vector<EyeMemory> save() const;
   void restore(const std::vector<EyeMemory>& memories);
@@ -41,9 +46,7 @@ class PreviewRenderer {
  private:
   struct Panel {
     PanelSpec spec;
-    Plan plan;
-    std::unique_ptr<EyeSimulator> eye;
-    FrameReport report;
+    Eye eye;
   };
   std::vector<Panel> panels_;
   PreviewOptions options_;

@@ -24,7 +24,6 @@
 #include "io/staged_file.hpp"
 #include "pipeline/run/output_paths.hpp"
 #include "pipeline/run/checkpoint.hpp"
-#include "pipeline/eye/gaze_timeline.hpp"
 #include "pipeline/run/interrupts.hpp"
 #include "pipeline/preview/preview_renderer.hpp"
 #include "pipeline/run/progress.hpp"
@@ -184,7 +183,7 @@ RunSummary run(const Settings& s) {
       for (const std::string& n : gaze.summary->notes) std::fprintf(stderr, "eyestream: gaze: %s\n", n.c_str());
     for (const std::string& w : gaze.summary->warnings) std::fprintf(stderr, "eyestream: warning: %s\n", w.c_str());
   }
-  const TargetRegion target(s.target_rect, s.target_mask, cv::Size(info.width, info.height));
+  TargetRegion(s.target_rect, s.target_mask, cv::Size(info.width, info.height));  // refused before any work
   refuse_before_work(s, info);
   io::SinkOptions sink_options = s.sink;
   sink_options.video.frames_per_second = info.frames_per_second;
@@ -194,7 +193,7 @@ RunSummary run(const Settings& s) {
   PreviewRenderer renderer(s, info, sink->needs());
   if (s.verbose) std::fprintf(stderr, "%s: %s\n%s", s.input.c_str(), info.description.c_str(), renderer.describe().c_str());
   const size_t main = renderer.main_panel();
-  const GazeTimeline timeline(samples, info.width / 2.0, info.height / 2.0);
+  renderer.set_gaze(samples);
   std::unique_ptr<ReportWriter> report = report_writer(s, renderer);
   if (report && gaze.summary) report->set_gaze(*gaze.summary);
   const std::string settings = run_settings(s, info);
@@ -228,8 +227,7 @@ RunSummary run(const Settings& s) {
     std::optional<io::SceneFrame> next = source->next();
     const double t1 = next ? next->time_s : current->time_s + 1.0 / info.frames_per_second;
     const bool written = current->index >= s.start_frame;
-    const io::DisplayFrame shown =
-        renderer.process(*current, timeline.segments(current->time_s, t1), target.mask(current->index));
+    const io::DisplayFrame shown = renderer.process(*current, t1);
     const FrameReport& main_report = renderer.report(main);
     if (main_report.nonfinite_pixels > 0 && s.bad_pixels == "fail")
       throw InputError(current->source + ": frame " + std::to_string(current->index) + " has " +

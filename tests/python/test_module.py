@@ -114,6 +114,31 @@ class MatchesTheCommandLine(unittest.TestCase):
                 self.assertTrue(np.array_equal(eye.code, expected), f"frame {n}")
             self.assertTrue(any(r[3] for r in log), "the log has a blink")
 
+    def test_a_whole_recording_is_read_as_the_command_line_reads_its_log(self):
+        # The log starts 50 ms in (frame 1): the command line holds its first
+        # sample back to frame 0, and so does an eye given the whole recording.
+        log = [r for r in gaze_log() if r[0] >= 0.05]
+        with tempfile.TemporaryDirectory() as d:
+            with open(os.path.join(d, "gaze.csv"), "w") as f:
+                f.write("t,x,y,event\n")
+                for t, x, y, closed in log:
+                    f.write(f"{t:.3f},{x:.1f},{y:.1f},{'blink' if closed else ''}\n")
+            raw = b"".join(scene(n).tobytes() for n in range(FRAMES))
+            cmd = [os.environ["EYESTREAM"], "run", "-i", "-", "--size", f"{W}x{H}", "--fps", str(FPS),
+                   "--gaze", os.path.join(d, "gaze.csv"), "--quality", "fast", "-o", os.path.join(d, "out", "%05d.png")]
+            subprocess.run(cmd, input=raw, check=True, capture_output=True)
+            eye = eyestream.Eye(W, H, FPS, quality="fast")
+            eye.set_gaze(log)
+            for n in range(FRAMES):
+                eye.process(scene(n))
+                expected = read_png_rgb8(os.path.join(d, "out", f"{n:05d}.png"))
+                self.assertTrue(np.array_equal(eye.code, expected), f"frame {n}")
+                if n == 0:
+                    self.assertEqual(eye.report["gaze_x"], log[0][1], "the first sample held back to frame 0")
+            self.assertGreater(eye.report["glare_ms"] + eye.report["retina_ms"], 0.0)
+            with self.assertRaises(eyestream.Error):
+                eye.process(scene(0), [(0.5, 1.0, 1.0)])
+
     def test_the_readers_feed_an_eye_the_frames_and_gaze_the_command_line_reads(self):
         # A built-in scene's EXR frames and gaze log, read by eyestream.Frames
         # and eyestream.read_gaze, through an Eye: the command line's PNGs.

@@ -21,6 +21,10 @@
 
 namespace eyestream {
 
+namespace detail {
+struct EyeAccess;  // the command line's access (not installed)
+}
+
 // An error with the message the command line prints after "eyestream:
 // error:" and its exit code (2 usage, 3 input, 4 output).
 class Error : public std::runtime_error {
@@ -60,6 +64,14 @@ struct FrameReport {
   double peak_cd_m2 = -1.0;
   double veil_cd_m2 = -1.0;
   double ti_percent = -1.0;
+  // With "report" and a target ("target" X,Y,W,H or "target-mask"): the
+  // mean scene luminance over the target and over its surround, and the
+  // veiling luminance at its centroid; -1 when unknown.
+  double target_cd_m2 = -1.0, background_cd_m2 = -1.0, target_veil_cd_m2 = -1.0;
+  // NaN or infinite input pixels (seen as black; never in the state).
+  long long nonfinite_pixels = 0;
+  // The model's time for the frame by stage, ms (encoding not included).
+  double glare_ms = 0.0, adaptation_ms = 0.0, retina_ms = 0.0, mesopic_ms = 0.0, afterimage_ms = 0.0;
 };
 
 struct Frame {
@@ -82,11 +94,19 @@ class Eye {
   // height) and the gaze samples inside its interval [n / fps, (n + 1) /
   // fps). Without samples the last gaze holds, as on the command line;
   // before the first sample the gaze is at the frame's centre (the command
-  // line, reading the whole log, holds the first sample back to frame 0).
+  // line, reading the whole log, holds the first sample back to frame 0:
+  // set_gaze does the same).
   Frame process(const cv::Mat& rgb_cd_m2, const std::vector<Gaze>& gaze = {});
   // The same for a plain pointer: height rows of width x 3 floats, rows
   // `stride_bytes` apart (not copied).
   Frame process(const float* rgb_cd_m2, std::size_t stride_bytes, const std::vector<Gaze>& gaze = {});
+
+  // The whole gaze recording at once, as the command line reads a log:
+  // every frame then takes its gaze from it (the first sample held back to
+  // frame 0, recorded pupils interpolated across blinks and gaps), and
+  // process() refuses samples of its own. An empty recording goes back to
+  // samples given frame by frame.
+  void set_gaze(const std::vector<Gaze>& recording);
 
   // The eye's state between frames (the checkpoint's contents, a copy), to
   // resume.
@@ -106,6 +126,8 @@ class Eye {
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
+  explicit Eye(std::unique_ptr<Impl> impl);
+  friend struct detail::EyeAccess;
 };
 
 // The viewer's point-spread function as the glare stage uses it (the

@@ -1,6 +1,6 @@
 #include "eyestream/readers.hpp"
 
-#include "api_settings.hpp"
+#include "pipeline/api/api_settings.hpp"
 #include "io/frame_source.hpp"
 #include "io/gaze_import.hpp"
 #include "pipeline/run/run_inputs.hpp"

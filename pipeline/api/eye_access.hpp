@@ -1,0 +1,34 @@
+// What the command line needs of an eyestream::Eye beyond the public API
+// (not installed). Its run and bench drive their eyes through here, so
+// the program is the API's client: one path through the model.
+#pragma once
+
+#include <vector>
+
+#include "eyestream/eye.hpp"
+#include "io/frame.hpp"
+#include "io/frame_source.hpp"
+#include "io/gaze_sample.hpp"
+#include "pipeline/eye/eye_simulator.hpp"
+#include "pipeline/settings/plan.hpp"
+#include "pipeline/settings/settings.hpp"
+
+namespace eyestream::detail {
+
+struct EyeAccess {
+  // An eye of settings already compiled (one panel of a run) for the
+  // source's frames. Throws the command line's own errors.
+  static Eye make(const pipeline::Settings& settings, const io::SourceInfo& source);
+  // Eye::set_gaze with the samples as the gaze reader gives them.
+  static void set_gaze(Eye& eye, std::vector<io::GazeSample> recording);
+  // The source's frame at its own index and time, seen until t1_s; the
+  // display-linear image, not encoded. report() then holds its report.
+  static io::DisplayFrame process(Eye& eye, const io::SceneFrame& frame, double t1_s);
+  static const pipeline::FrameReport& report(const Eye& eye);
+  static const pipeline::Plan& plan(const Eye& eye);
+  static const pipeline::EyeSimulator& simulator(const Eye& eye);
+  // The checkpoint's view of the state (restore checks it first).
+  static void restore(Eye& eye, const pipeline::EyeMemory& memory);
+};
+
+}  // namespace eyestream::detail
