@@ -8,6 +8,7 @@
 
 #include "pipeline/eye/frame_buffer_pool.hpp"
 #include "retina/acuity_loss.hpp"
+#include "retina/afterimage_composite.hpp"
 #include "retina/display_encoding.hpp"
 #include "retina/luminance_field.hpp"
 #include "retina/tone_curve.hpp"
@@ -61,6 +62,22 @@ void BM_EncodeDithered8(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * 1920 * 1080);
 }
 
+// The afterimage composite of a 1080p frame: maps the frame's size
+// (argument 1) or reduced to a quarter each way (4), as the rectilinear
+// projection draws them; a third of their pixels at rest.
+void BM_AfterimageComposite(benchmark::State& state) {
+  cv::setNumThreads(2);
+  const int reduce = int(state.range(0));
+  cv::Mat tone(1080, 1920, CV_32FC3), gain(1080 / reduce, 1920 / reduce, CV_32FC3), bleach(gain.size(), CV_32FC3);
+  cv::randu(tone, 0.0, 1.0);
+  cv::randu(gain, -0.3, 0.3);
+  cv::randu(bleach, -0.01, 0.01);
+  for (int y = 0; y < gain.rows; y += 3) gain.row(y).setTo(0.0), bleach.row(y).setTo(0.0);
+  cv::Mat out;
+  for (auto _ : state) retina::composite_afterimages(tone, gain, bleach, out);
+  state.SetItemsProcessed(state.iterations() * 1920 * 1080);
+}
+
 // The acuity loss of a 1080p frame at 37 px/deg (the default viewing of a
 // 1920 px frame), every pixel mesopic (rho 0.3 plus the noise), two
 // threads, by pyramid_from_px x 10: 0 reference, 60 balanced, 15 fast (30: fast before 2026-12-02).
@@ -86,6 +103,7 @@ void BM_AcuityLoss(benchmark::State& state) {
 BENCHMARK(BM_LuminanceField)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_ToneMap)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_EncodeDithered8)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_AfterimageComposite)->Arg(1)->Arg(4)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_AcuityLoss)->Arg(0)->Arg(60)->Arg(30)->Arg(15)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace

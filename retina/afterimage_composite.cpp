@@ -1,12 +1,16 @@
 #include "retina/afterimage_composite.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <optional>
 #include <utility>
 #include <vector>
 
 #include "retina/bilinear_axis.hpp"
-
 #include "retina/cone_space.hpp"
+#include "retina/vector_clones.hpp"
 
 namespace eyestream::retina {
 
@@ -22,51 +26,135 @@ cv::Mat to_cone_stimulus(const cv::Mat& rgb, int depth) {
   return lms;
 }
 
+namespace {
+
+// A 3x3 matrix times (x0, x1, x2), each row summed from 0 in order, as
+// cv::Matx does (so a sum of zeros is +0, bit for bit).
+struct Rows3 {
+  float m[9];
+  float row(int i, float x0, float x1, float x2) const {
+    return ((0.0f + m[3 * i] * x0) + m[3 * i + 1] * x1) + m[3 * i + 2] * x2;
+  }
+};
+
+std::uint32_t bits_of(float v) {
+  std::uint32_t b;
+  std::memcpy(&b, &v, sizeof b);
+  return b;
+}
+
+// a where mask is all ones, b where it is 0: a blend of bits, which keeps
+// the loop free of branches (and so vectorised).
+float blend(std::uint32_t mask, float a, float b) {
+  const std::uint32_t r = (bits_of(a) & mask) | (bits_of(b) & ~mask);
+  float v;
+  std::memcpy(&v, &r, sizeof v);
+  return v;
+}
+
+Rows3 rows3(const cv::Matx33f& a) {
+  Rows3 r;
+  for (int i = 0; i < 9; ++i) r.m[i] = a.val[i];
+  return r;
+}
+
+// One row of n pixels (interleaved RGB; the maps' LMS beside them), in a
+// loop compiled for AVX2 beside the baseline (vector_clones.hpp).
+EYESTREAM_VECTOR_CLONES
+void composite_row(const float* j, const float* g, const float* b, Rows3 to_lms, Rows3 to_rgb, Rows3 h, float* o,
+                   int n) {
+  for (int x = 0; x < n; ++x) {
+    const float j0 = j[3 * x], j1 = j[3 * x + 1], j2 = j[3 * x + 2];
+    const float g0 = g[3 * x], g1 = g[3 * x + 1], g2 = g[3 * x + 2];
+    const float b0 = b[3 * x], b1 = b[3 * x + 1], b2 = b[3 * x + 2];
+    const float l0 = to_lms.row(0, j0, j1, j2), l1 = to_lms.row(1, j0, j1, j2), l2 = to_lms.row(2, j0, j1, j2);
+    const float e0 = l0 + l0 * g0, e1 = l1 + l1 * g1, e2 = l2 + l2 * g2;
+    // At rest: every map value +0 or -0 (no bit but the sign set).
+    const std::uint32_t any = (bits_of(g0) | bits_of(g1) | bits_of(g2) | bits_of(b0) | bits_of(b1) | bits_of(b2)) << 1;
+    const std::uint32_t rest = 0u - std::uint32_t(any == 0u);
+    const float v0 = to_rgb.row(0, e0, e1, e2) + h.row(0, b0, b1, b2);
+    const float v1 = to_rgb.row(1, e0, e1, e2) + h.row(1, b0, b1, b2);
+    const float v2 = to_rgb.row(2, e0, e1, e2) + h.row(2, b0, b1, b2);
+    o[3 * x] = blend(rest, j0, v0);
+    o[3 * x + 1] = blend(rest, j1, v1);
+    o[3 * x + 2] = blend(rest, j2, v2);
+  }
+}
+
+// A reduced map's row enlarged across to n pixels (interleaved, 3
+// channels), as cv::resize INTER_LINEAR's horizontal pass.
+void enlarge_across(const float* r, const BilinearAxis& across, float* out, int n) {
+  for (int x = 0; x < n; ++x) {
+    const float fx = across.w[size_t(x)];
+    const int x0 = 3 * across.lo[size_t(x)], x1 = 3 * across.hi[size_t(x)];
+    for (int c = 0; c < 3; ++c) out[3 * x + c] = r[x0 + c] * (1.0f - fx) + r[x1 + c] * fx;
+  }
+}
+
+// Then down: the blend of two enlarged rows (weight fy of b).
+EYESTREAM_VECTOR_CLONES
+void blend_rows(const float* a, const float* b, float fy, float* out, int n) {
+  for (int i = 0; i < n; ++i) out[i] = a[i] * (1.0f - fy) + b[i] * fy;
+}
+
+// A reduced map's rows enlarged across, the last two kept: a stripe of
+// output rows reads each of them for about 1 / scale rows in turn.
+class EnlargedRows {
+ public:
+  EnlargedRows(const cv::Mat& map, const BilinearAxis& across, int n) : map_(map), across_(across), n_(n) {
+    for (auto& r : rows_) r.resize(size_t(n) * 3);
+  }
+  // Row i enlarged; valid until a row other than i and the one asked for
+  // just before it is asked for.
+  const float* row(int i) {
+    int k = index_[0] == i ? 0 : index_[1] == i ? 1 : -1;
+    if (k < 0) {  // replaces the row not asked for last
+      k = 1 - last_;
+      index_[k] = i;
+      enlarge_across(map_.ptr<float>(i), across_, rows_[k].data(), n_);
+    }
+    last_ = k;
+    return rows_[k].data();
+  }
+
+ private:
+  const cv::Mat& map_;
+  const BilinearAxis& across_;
+  int n_;
+  std::vector<float> rows_[2];
+  int index_[2] = {-1, -1};
+  int last_ = 1;
+};
+
+}  // namespace
+
 void composite_afterimages(const cv::Mat& tone_mapped, const cv::Mat& gain, const cv::Mat& bleach, cv::Mat& out) {
   // `gain` holds alpha^j2 - 1.
   CV_Assert(tone_mapped.type() == CV_32FC3 && gain.type() == CV_32FC3 && gain.size() == bleach.size() &&
-            gain.cols <= tone_mapped.cols && gain.rows <= tone_mapped.rows);
-  const cv::Matx33f to_lms = rgb_to_lms_f(), to_rgb = lms_to_rgb_f(), h = afterimage_matrix_f();
+            bleach.type() == CV_32FC3 && gain.cols <= tone_mapped.cols && gain.rows <= tone_mapped.rows);
+  const Rows3 to_lms = rows3(rgb_to_lms_f()), to_rgb = rows3(lms_to_rgb_f()), h = rows3(afterimage_matrix_f());
   const bool full = gain.size() == tone_mapped.size();
-  const BilinearAxis across(full ? 0 : tone_mapped.cols, gain.cols, float(gain.cols) / float(tone_mapped.cols));
+  const int w = tone_mapped.cols;
+  const BilinearAxis across(full ? 0 : w, gain.cols, float(gain.cols) / float(w));
   const BilinearAxis down(full ? 0 : tone_mapped.rows, gain.rows, float(gain.rows) / float(tone_mapped.rows));
   out.create(tone_mapped.size(), CV_32FC3);
   cv::parallel_for_(cv::Range(0, tone_mapped.rows), [&](const cv::Range& rows) {
-    std::vector<cv::Vec3f> g_row, b_row;
+    std::vector<float> g_row(full ? 0 : size_t(w) * 3), b_row(full ? 0 : size_t(w) * 3);
+    std::optional<EnlargedRows> g_rows, b_rows;
+    if (!full) g_rows.emplace(gain, across, w), b_rows.emplace(bleach, across, w);
     for (int y = rows.start; y < rows.end; ++y) {
-      const cv::Vec3f* j = tone_mapped.ptr<cv::Vec3f>(y);
-      const cv::Vec3f* g = gain.ptr<cv::Vec3f>(full ? y : 0);
-      const cv::Vec3f* b = bleach.ptr<cv::Vec3f>(full ? y : 0);
+      const float* g = gain.ptr<float>(full ? y : 0);
+      const float* b = bleach.ptr<float>(full ? y : 0);
       if (!full) {  // the maps' row, enlarged
-        g_row.resize(size_t(tone_mapped.cols));
-        b_row.resize(size_t(tone_mapped.cols));
         const size_t iy = size_t(y);
-        const float fy = down.w[iy];
-        for (const auto& [map, row] : {std::pair{&gain, &g_row}, std::pair{&bleach, &b_row}}) {
-          const cv::Vec3f* r0 = map->ptr<cv::Vec3f>(down.lo[iy]);
-          const cv::Vec3f* r1 = map->ptr<cv::Vec3f>(down.hi[iy]);
-          for (int x = 0; x < tone_mapped.cols; ++x) {
-            const size_t ix = size_t(x);
-            const float fx = across.w[ix];
-            const int x0 = across.lo[ix], x1 = across.hi[ix];
-            (*row)[ix] = (r0[x0] * (1.0f - fx) + r0[x1] * fx) * (1.0f - fy) + (r1[x0] * (1.0f - fx) + r1[x1] * fx) * fy;
-          }
-        }
+        blend_rows(g_rows->row(down.lo[iy]), g_rows->row(down.hi[iy]), down.w[iy], g_row.data(), 3 * w);
+        blend_rows(b_rows->row(down.lo[iy]), b_rows->row(down.hi[iy]), down.w[iy], b_row.data(), 3 * w);
         g = g_row.data();
         b = b_row.data();
       }
-      cv::Vec3f* o = out.ptr<cv::Vec3f>(y);
-      for (int x = 0; x < tone_mapped.cols; ++x) {
-        const bool at_rest = g[x] == cv::Vec3f(0, 0, 0) && b[x] == cv::Vec3f(0, 0, 0);
-        if (at_rest) {
-          o[x] = j[x];
-          continue;
-        }
-        const cv::Vec3f lms = to_lms * j[x];
-        o[x] = to_rgb * (lms + lms.mul(g[x])) + h * b[x];
-      }
+      composite_row(tone_mapped.ptr<float>(y), g, b, to_lms, to_rgb, h, out.ptr<float>(y), w);
     }
-  });
+  }, double(std::max(1, cv::getNumThreads()) * 4));  // stripes of rows, each enlarging a map row once
 }
 
 }  // namespace eyestream::retina

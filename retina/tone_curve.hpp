@@ -44,6 +44,10 @@ class ToneCurve {
     const float q = (*power_)(1.0f / ratio);
     return q / (q + 1.0f);
   }
+  // Its half-response luminance and its power table, for loops that take
+  // response() apart to run a row at a time (tone_map.cpp).
+  float sigma() const { return sigma_; }
+  const PowTable& power() const { return *power_; }
 
  private:
   float sigma_;

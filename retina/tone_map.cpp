@@ -1,8 +1,13 @@
 #include "retina/tone_map.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <vector>
 
 #include "retina/luminance.hpp"
+#include "retina/vector_clones.hpp"
 
 namespace eyestream::retina {
 
@@ -16,33 +21,92 @@ void tone_map(const cv::Mat& rgb, const ToneCurve& curve, cv::Mat& out) {
   tone_map(rgb, curve, photopic, out);
 }
 
+namespace {
+
+std::uint32_t bits_of(float v) {
+  std::uint32_t b;
+  std::memcpy(&b, &v, sizeof b);
+  return b;
+}
+
+// v where mask is all ones, else 0: by bits, not a branch, so the loops
+// stay vectorised.
+float masked(std::uint32_t mask, float v) {
+  const std::uint32_t r = bits_of(v) & mask;
+  float out;
+  std::memcpy(&out, &r, sizeof out);
+  return out;
+}
+
+float pick(std::uint32_t mask, float a, float b) {
+  const std::uint32_t r = (bits_of(a) & mask) | (bits_of(b) & ~mask);
+  float out;
+  std::memcpy(&out, &r, sizeof out);
+  return out;
+}
+
+std::uint32_t all_ones_if(bool c) { return 0u - std::uint32_t(c); }
+
+// What a row's pixels need: the photopic luminance Yp, the mesopic Ym and
+// the tone curve's power argument (sigma / Ym or its inverse, whichever is
+// at most 1; 1 for a pixel shown black).
+EYESTREAM_VECTOR_CLONES
+void luminances_row(const float* in, const float* rho, float w0, float w1, float w2, float sigma, float* yp_out,
+                    float* ym_out, float* arg, int n) {
+  for (int x = 0; x < n; ++x) {
+    const float p0 = in[3 * x], p1 = in[3 * x + 1], p2 = in[3 * x + 2];
+    const float yp = kPhotopicR * p0 + kPhotopicG * p1 + kPhotopicB * p2;
+    const float ys = ((0.0f + w0 * p0) + w1 * p1) + w2 * p2;  // as cv::Vec::dot
+    const float ym = rho[x] * yp + (1.0f - rho[x]) * ys;  // Purkinje: Jacobs et al. 2015 sec. 2.3.1
+    const float ratio = sigma / ym;
+    const bool shown = (yp > 0.0f) & (ym > 0.0f) & ((bits_of(ym) & 0x7f800000u) != 0x7f800000u);
+    arg[x] = pick(all_ones_if(shown), pick(all_ones_if(ratio <= 1.0f), ratio, 1.0f / ratio), 1.0f);
+    yp_out[x] = yp;
+    ym_out[x] = ym;
+  }
+}
+
+// The colour back from the response R(Ym) (from q, the power of arg):
+// rgb (share R / Yp) + tint_ratio (1 - rho) R (hue shift: Jacobs et al.
+// 2015 sec. 2.3.2), share = rho with the hue shift, else 1.
+EYESTREAM_VECTOR_CLONES
+void colour_row(const float* in, const float* rho, const float* yp, const float* ym, const float* q, float sigma,
+                float t0, float t1, float t2, bool hue_shift, float* out, int n) {
+  for (int x = 0; x < n; ++x) {
+    const float ratio = sigma / ym[x];
+    const float r = pick(all_ones_if(ratio <= 1.0f), 1.0f / (1.0f + q[x]), q[x] / (q[x] + 1.0f));
+    const bool shown = (yp[x] > 0.0f) & (ym[x] > 0.0f) & ((bits_of(ym[x]) & 0x7f800000u) != 0x7f800000u);
+    const std::uint32_t keep = all_ones_if(shown);
+    const float dim = 1.0f - rho[x];
+    const float share = pick(all_ones_if(hue_shift), rho[x], 1.0f);
+    const float s = share * r / yp[x];
+    out[3 * x] = masked(keep, in[3 * x] * s + (t0 * dim) * r);
+    out[3 * x + 1] = masked(keep, in[3 * x + 1] * s + (t1 * dim) * r);
+    out[3 * x + 2] = masked(keep, in[3 * x + 2] * s + (t2 * dim) * r);
+  }
+}
+
+}  // namespace
+
 void tone_map(const cv::Mat& rgb, const ToneCurve& curve, const MesopicColour& m, cv::Mat& out) {
   CV_Assert(rgb.type() == CV_32FC3);
   out.create(rgb.size(), CV_32FC3);
   CV_Assert(!m.rho_map || (m.rho_map->size() == rgb.size() && m.rho_map->type() == CV_32F));
-  const cv::Vec3f tint_ratio = m.hue_shift ? m.tint_ratio : cv::Vec3f(0, 0, 0);
+  const cv::Vec3f tint = m.hue_shift ? m.tint_ratio : cv::Vec3f(0, 0, 0);
+  const cv::Vec3f w = m.scotopic_weights;
+  const int n = rgb.cols;
   cv::parallel_for_(cv::Range(0, rgb.rows), [&](const cv::Range& rows) {
+    const size_t values = size_t(n);
+    std::vector<float> constant_rho(m.rho_map ? 0 : values, m.rho), yp(values), ym(values), arg(values), q(values);
     for (int y = rows.start; y < rows.end; ++y) {
-      const cv::Vec3f* in = rgb.ptr<cv::Vec3f>(y);
-      const float* rho_row = m.rho_map ? m.rho_map->ptr<float>(y) : nullptr;
-      cv::Vec3f* o = out.ptr<cv::Vec3f>(y);
-      for (int x = 0; x < rgb.cols; ++x) {
-        const float rho = rho_row ? rho_row[x] : m.rho;
-        const cv::Vec3f tint = tint_ratio * (1.0f - rho);
-        const float scene_share = m.hue_shift ? rho : 1.0f;
-        const cv::Vec3f p = in[x];
-        const float yp = photopic_luminance(p);
-        const float ys = m.scotopic_weights.dot(p);
-        const float ym = rho * yp + (1.0f - rho) * ys;  // Purkinje: Jacobs et al. 2015 sec. 2.3.1
-        if (!(yp > 0.0f) || !(ym > 0.0f) || !std::isfinite(ym)) {
-          o[x] = cv::Vec3f(0, 0, 0);
-          continue;
-        }
-        const float r = curve.response(ym);
-        o[x] = p * (scene_share * r / yp) + tint * r;  // hue shift: Jacobs et al. 2015 sec. 2.3.2
-      }
+      const float* in = rgb.ptr<float>(y);
+      const float* rho = m.rho_map ? m.rho_map->ptr<float>(y) : constant_rho.data();
+      luminances_row(in, rho, w[0], w[1], w[2], curve.sigma(), yp.data(), ym.data(), arg.data(), n);
+      curve.power().batch(arg.data(), q.data(), n);
+      colour_row(in, rho, yp.data(), ym.data(), q.data(), curve.sigma(), tint[0], tint[1], tint[2], m.hue_shift,
+                 out.ptr<float>(y), n);
     }
-  });
+  }, double(std::max(1, cv::getNumThreads()) * 4));  // stripes of rows, each with its row buffers
 }
 
 }  // namespace eyestream::retina

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <optional>
 
 #include "pipeline/api/eye_access.hpp"
@@ -45,8 +46,9 @@ struct Eye::Impl {
   pipeline::TargetRegion target;
   int bits = 8;  // of the encoded frame
   std::int64_t index = 0;
-  // set_gaze's recording, read as the command line reads a whole log.
-  std::optional<pipeline::GazeTimeline> recording;
+  // set_gaze's recording, read as the command line reads a whole log
+  // (shared by the panels of a run).
+  std::shared_ptr<const pipeline::GazeTimeline> recording;
   // Without one, the gaze carried from earlier frames: the last sample with
   // a position, then the last sample when it is a blink or lost (which
   // hold that position), as the timeline of the whole log has them.
@@ -86,7 +88,9 @@ struct Eye::Impl {
   // The one path through the model, for the API and the command line.
   io::DisplayFrame step(const io::SceneFrame& scene, const std::vector<pipeline::GazeSegment>& segments) {
     last = pipeline::FrameReport();
-    io::DisplayFrame shown = eye.process(scene, segments, &last, target.mask(scene.index));
+    // The target only matters to the report (and its masks are files).
+    const cv::Mat mask = plan.report ? target.mask(scene.index) : cv::Mat();
+    io::DisplayFrame shown = eye.process(scene, segments, &last, mask);
     last_recorded_pupil = plan.pupil_from_gaze ? segments.front().recorded_pupil_mm : NAN;
     index = scene.index + 1;
     return shown;
@@ -150,9 +154,12 @@ std::string Eye::describe() const { return impl_->plan.describe(); }
 
 void Eye::set_gaze(const std::vector<Gaze>& recording) {
   translated([&] {
+    std::shared_ptr<const pipeline::GazeTimeline> timeline;
+    if (!recording.empty())
+      timeline = std::make_shared<const pipeline::GazeTimeline>(gaze_samples(recording, "the recording"),
+                                                                width() / 2.0, height() / 2.0);
     impl_->carried.clear();
-    if (recording.empty()) impl_->recording.reset();
-    else impl_->recording.emplace(gaze_samples(recording, "the recording"), width() / 2.0, height() / 2.0);
+    impl_->recording = std::move(timeline);
     return 0;
   });
 }
@@ -226,9 +233,9 @@ Eye EyeAccess::make(const pipeline::Settings& settings, const io::SourceInfo& so
   return Eye(std::make_unique<Eye::Impl>(pipeline::compile_plan(settings, source), settings));
 }
 
-void EyeAccess::set_gaze(Eye& eye, std::vector<io::GazeSample> recording) {
+void EyeAccess::set_gaze(Eye& eye, std::shared_ptr<const pipeline::GazeTimeline> recording) {
   eye.impl_->carried.clear();
-  eye.impl_->recording.emplace(recording, eye.width() / 2.0, eye.height() / 2.0);
+  eye.impl_->recording = std::move(recording);
 }
 
 io::DisplayFrame EyeAccess::process(Eye& eye, const io::SceneFrame& frame, double t1_s) {

@@ -3,24 +3,25 @@
 // the program is the API's client: one path through the model.
 #pragma once
 
-#include <vector>
+#include <memory>
 
 #include "eyestream/eye.hpp"
 #include "io/frame.hpp"
 #include "io/frame_source.hpp"
-#include "io/gaze_sample.hpp"
 #include "pipeline/eye/eye_simulator.hpp"
+#include "pipeline/eye/gaze_timeline.hpp"
 #include "pipeline/settings/plan.hpp"
 #include "pipeline/settings/settings.hpp"
 
 namespace eyestream::detail {
 
-struct EyeAccess {
+// Hidden: libeyestream.so does not export it.
+struct __attribute__((visibility("hidden"))) EyeAccess {
   // An eye of settings already compiled (one panel of a run) for the
   // source's frames. Throws the command line's own errors.
   static Eye make(const pipeline::Settings& settings, const io::SourceInfo& source);
-  // Eye::set_gaze with the samples as the gaze reader gives them.
-  static void set_gaze(Eye& eye, std::vector<io::GazeSample> recording);
+  // Eye::set_gaze with the gaze log's timeline (one for every panel).
+  static void set_gaze(Eye& eye, std::shared_ptr<const pipeline::GazeTimeline> recording);
   // The source's frame at its own index and time, seen until t1_s; the
   // display-linear image, not encoded. report() then holds its report.
   static io::DisplayFrame process(Eye& eye, const io::SceneFrame& frame, double t1_s);

@@ -12,7 +12,8 @@ BenchCase run_bench_case(const BenchScene& scene, const Settings& settings) {
   const double resident_before = resident_mib();
   auto clock = std::chrono::steady_clock::now();
   Eye eye = detail::EyeAccess::make(settings, scene.info);
-  detail::EyeAccess::set_gaze(eye, scene.gaze);
+  detail::EyeAccess::set_gaze(eye, std::make_shared<const GazeTimeline>(scene.gaze, scene.info.width / 2.0,
+                                                                        scene.info.height / 2.0));
   const Plan& plan = detail::EyeAccess::plan(eye);
   c.setup_s = lap_ms(clock) / 1000.0;
   cv::Mat code;

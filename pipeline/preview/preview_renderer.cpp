@@ -19,7 +19,8 @@ PreviewRenderer::PreviewRenderer(const Settings& s, const io::SourceInfo& source
 }
 
 void PreviewRenderer::set_gaze(const std::vector<io::GazeSample>& recording) {
-  for (Panel& p : panels_) detail::EyeAccess::set_gaze(p.eye, recording);
+  const auto timeline = std::make_shared<const GazeTimeline>(recording, plan(0).width / 2.0, plan(0).height / 2.0);
+  for (Panel& p : panels_) detail::EyeAccess::set_gaze(p.eye, timeline);
 }
 
 io::DisplayFrame PreviewRenderer::process(const io::SceneFrame& frame, double t1_s) {

@@ -105,11 +105,13 @@ class Eye {
   // every frame then takes its gaze from it (the first sample held back to
   // frame 0, recorded pupils interpolated across blinks and gaps), and
   // process() refuses samples of its own. An empty recording goes back to
-  // samples given frame by frame.
+  // samples given frame by frame, the gaze at the frame's centre until the
+  // first. Nothing changes when it throws (a non-finite sample).
   void set_gaze(const std::vector<Gaze>& recording);
 
   // The eye's state between frames (the checkpoint's contents, a copy), to
-  // resume.
+  // resume. A recording given with set_gaze is not part of it: give the
+  // restoring eye the same recording.
   struct State {
     std::vector<cv::Mat> mats;
     std::vector<double> numbers;
