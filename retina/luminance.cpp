@@ -1,22 +1,40 @@
 #include "retina/luminance.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+
+#include "retina/vector_clones.hpp"
 
 namespace eyestream::retina {
+
+namespace {
+
+// One row: the photopic luminance, or the floor where it is below it, NaN
+// or infinite; the test by bits and the choice by a mask, so the loop has
+// no branch and is vectorised (vector_clones.hpp).
+EYESTREAM_VECTOR_CLONES
+void floored_row(const float* in, float floor, float* out, int n) {
+  for (int x = 0; x < n; ++x) {
+    const float v = kPhotopicR * in[3 * x] + kPhotopicG * in[3 * x + 1] + kPhotopicB * in[3 * x + 2];
+    std::uint32_t vb, fb;
+    std::memcpy(&vb, &v, sizeof vb);
+    std::memcpy(&fb, &floor, sizeof fb);
+    const bool keep = (v > floor) & ((vb & 0x7f800000u) != 0x7f800000u);
+    const std::uint32_t mask = 0u - std::uint32_t(keep);
+    const std::uint32_t r = (vb & mask) | (fb & ~mask);
+    std::memcpy(&out[x], &r, sizeof r);
+  }
+}
+
+}  // namespace
 
 cv::Mat floored_luminance(const cv::Mat& rgb, double floor_cd_m2) {
   CV_Assert(rgb.type() == CV_32FC3);
   cv::Mat l(rgb.size(), CV_32F);
   const float floor = float(floor_cd_m2);
   cv::parallel_for_(cv::Range(0, rgb.rows), [&](const cv::Range& rows) {
-    for (int y = rows.start; y < rows.end; ++y) {
-      const cv::Vec3f* in = rgb.ptr<cv::Vec3f>(y);
-      float* out = l.ptr<float>(y);
-      for (int x = 0; x < rgb.cols; ++x) {
-        const float v = photopic_luminance(in[x]);
-        out[x] = (v > floor && std::isfinite(v)) ? v : floor;
-      }
-    }
+    for (int y = rows.start; y < rows.end; ++y) floored_row(rgb.ptr<float>(y), floor, l.ptr<float>(y), rgb.cols);
   });
   return l;
 }

@@ -3,7 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <limits>
 
+#include "pipeline/eye/pixel_checks.hpp"
+#include "retina/luminance.hpp"
 #include "tests/test_support.hpp"
 
 namespace eyestream::retina {
@@ -56,3 +60,30 @@ TEST(LuminanceField, BlackAndNonFinitePixelsCountAsTheFloor) {
 
 }  // namespace
 }  // namespace eyestream::retina
+
+// The floored luminance and the non-finite count, by their definitions
+// written out here, over every kind of value, on a row whose width leaves
+// the vector loops a tail.
+TEST(PixelChecks, FlooredLuminanceAndNonFiniteCountByTheirDefinitions) {
+  const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+  const float values[] = {0.0f, -0.0f, -3.0f, 1e-9f, 1e-6f, 0.5f, 7.0f, 3e38f, inf, -inf, nan, 1e-42f};
+  cv::Mat rgb(3, 37, CV_32FC3);
+  cv::RNG rng(3);
+  std::int64_t bad = 0;
+  for (int y = 0; y < rgb.rows; ++y)
+    for (int x = 0; x < rgb.cols; ++x) {
+      cv::Vec3f& p = rgb.at<cv::Vec3f>(y, x);
+      for (int c = 0; c < 3; ++c) p[c] = values[rng.uniform(0, 12)];
+      bad += !(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]));
+    }
+  EXPECT_EQ(eyestream::pipeline::count_nonfinite(rgb), bad);
+  EXPECT_GT(bad, 0);
+  const float floor = 1e-6f;
+  const cv::Mat l = eyestream::retina::floored_luminance(rgb, floor);
+  for (int y = 0; y < rgb.rows; ++y)
+    for (int x = 0; x < rgb.cols; ++x) {
+      const float v = eyestream::retina::photopic_luminance(rgb.at<cv::Vec3f>(y, x));
+      const float want = (v > floor && std::isfinite(v)) ? v : floor;
+      EXPECT_EQ(std::memcmp(&want, &l.at<float>(y, x), sizeof want), 0) << x << "," << y;
+    }
+}

@@ -58,8 +58,21 @@ void MesopicStage::render(const cv::Mat& rgb, const retina::ToneCurve& curve, do
                                                    : retina::floored_luminance(rgb, plan_.dark_cd_m2);
   cv::Mat rho;
   if (local) {
-    retina::local_rho(floored, adaptation_log, plan_.mesopic.colour.local_sigma_deg * plan_.pixels_per_degree,
-                      plan_.mesopic.colour, rho);
+    const double sigma = plan_.mesopic.colour.local_sigma_deg * plan_.pixels_per_degree;
+    // Held reduced as the acuity's levels are (pyramid_from_px: `fast`
+    // only at 1080p): the luminance low-passed on a grid reduced by f, rho
+    // there, read back bilinearly.
+    const double from_px = plan_.mesopic.acuity_params.pyramid_from_px;
+    int f = 1;
+    while (from_px > 0.0 && sigma / (2 * f) >= from_px / 2 && floored.cols / (2 * f) >= 8 && floored.rows / (2 * f) >= 8)
+      f *= 2;
+    if (f == 1) {
+      retina::local_rho(floored, adaptation_log, sigma, plan_.mesopic.colour, rho);
+    } else {
+      cv::Mat reduced;
+      retina::local_rho(retina::acuity_lowpass(floored, sigma, f), adaptation_log, 0.0, plan_.mesopic.colour, reduced);
+      cv::resize(reduced, rho, floored.size(), 0, 0, cv::INTER_LINEAR);
+    }
     colour.rho_map = &rho;
   }
   if (tinted)
