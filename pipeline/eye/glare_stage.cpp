@@ -3,10 +3,11 @@
 #include <cstring>
 #include <opencv2/imgproc.hpp>
 
-#include "glare/linear_taps.hpp"
 #include "glare/uniform_field.hpp"
 #include "glare/veiling_luminance.hpp"
+#include "retina/enlarged_rows.hpp"
 #include "retina/luminance.hpp"
+#include "retina/vector_clones.hpp"
 
 namespace eyestream::pipeline {
 
@@ -31,6 +32,19 @@ std::shared_ptr<const FrameProjection> glare_plane(const Plan& plan) {
                                                  plan.glare.plane_scale);
 }
 
+// A frame row: the moved light (two widened rows of the halved frame,
+// blended down with weight fy of b) plus the light the PSF keeps on the
+// frame's own pixel, kept x in.
+EYESTREAM_VECTOR_CLONES
+void add_kept_row(const float* a, const float* b, float fy, const float* in, cv::Vec3f kept, float* out, int pixels) {
+  const float k0 = kept[0], k1 = kept[1], k2 = kept[2];
+  for (int x = 0; x < pixels; ++x) {
+    out[3 * x] = a[3 * x] * (1.0f - fy) + b[3 * x] * fy + k0 * in[3 * x];
+    out[3 * x + 1] = a[3 * x + 1] * (1.0f - fy) + b[3 * x + 1] * fy + k1 * in[3 * x + 1];
+    out[3 * x + 2] = a[3 * x + 2] * (1.0f - fy) + b[3 * x + 2] * fy + k2 * in[3 * x + 2];
+  }
+}
+
 }  // namespace
 
 GlareStage::GlareStage(const Plan& plan)
@@ -41,8 +55,10 @@ GlareStage::GlareStage(const Plan& plan)
       ppd_(plane_->pixels_per_degree()) {
   const cv::Size plane = plane_->plane_size();
   if (!halved_.empty()) {  // the halved glare frame's taps to the frame (spread())
-    up_cols_ = glare::linear_taps(0, plan.width, double(halved_.width) / plan.width, halved_.width);
-    up_rows_ = glare::linear_taps(0, plan.height, double(halved_.height) / plan.height, halved_.height);
+    up_cols_ = std::make_shared<const retina::BilinearAxis>(plan.width, halved_.width,
+                                                            float(halved_.width) / float(plan.width));
+    up_rows_ = std::make_shared<const retina::BilinearAxis>(plan.height, halved_.height,
+                                                            float(halved_.height) / float(plan.height));
   }
   if (plan.glare.gaussian) {  // no kernels: a separable blur does the work
     const double sigma = plan.glare.gaussian_sigma_deg * ppd_;
@@ -174,25 +190,19 @@ cv::Mat GlareStage::spread(const cv::Mat& rgb, const glare::PsfWeights& w, doubl
     });
     return moved;
   }
-  CV_Assert(moved.size() == halved_ && rgb.cols == int(up_cols_.size()) && rgb.rows == int(up_rows_.size()));
+  CV_Assert(moved.size() == halved_ && up_cols_ && up_rows_ && rgb.cols == int(up_cols_->w.size()) &&
+            rgb.rows == int(up_rows_->w.size()));
   cv::Mat out(rgb.size(), CV_32FC3);
-  const std::vector<glare::LinearTap>& cols = up_cols_;
-  const std::vector<glare::LinearTap>& rows = up_rows_;
+  const retina::BilinearAxis& down = *up_rows_;
   cv::parallel_for_(cv::Range(0, out.rows), [&](const cv::Range& range) {
-    std::vector<cv::Vec3f> line(size_t(moved.cols));
+    retina::EnlargedRows widened(moved, *up_cols_, out.cols);  // each halved row widened once per stripe
     for (int y = range.start; y < range.end; ++y) {
-      const glare::LinearTap& ty = rows[size_t(y)];
-      const cv::Vec3f* a = moved.ptr<cv::Vec3f>(ty.a);
-      const cv::Vec3f* b = moved.ptr<cv::Vec3f>(ty.b);
-      for (size_t k = 0; k < line.size(); ++k) line[k] = a[k] * (1.0f - ty.wb) + b[k] * ty.wb;
-      cv::Vec3f* o = out.ptr<cv::Vec3f>(y);
-      const cv::Vec3f* in = rgb.ptr<cv::Vec3f>(y);
-      for (int x = 0; x < out.cols; ++x) {
-        const glare::LinearTap& tx = cols[size_t(x)];
-        o[x] = line[size_t(tx.a)] * (1.0f - tx.wb) + line[size_t(tx.b)] * tx.wb + kept.mul(in[x]);
-      }
+      const size_t iy = size_t(y);
+      const float* a = widened.row(down.lo[iy]);
+      const float* b = widened.row(down.hi[iy]);
+      add_kept_row(a, b, down.w[iy], rgb.ptr<float>(y), kept, out.ptr<float>(y), out.cols);
     }
-  });
+  }, double(std::max(1, cv::getNumThreads()) * 4));
   return out;
 }
 

@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "glare/fft_convolver.hpp"
-#include "glare/linear_taps.hpp"
+#include "retina/bilinear_axis.hpp"
 #include "glare/split_convolver.hpp"
 #include "glare/wave_lines.hpp"
 #include "glare/psf_kernel.hpp"
@@ -94,9 +94,9 @@ class GlareStage {
   // same light as its four pixels (kept light stays full-resolution).
   cv::Size halved_;
   cv::Mat to_glare_frame(const cv::Mat& frame) const;
-  // The halved frame's samples each frame pixel reads when spread() brings
-  // the moved light back (glare/linear_taps.hpp), per column and per row.
-  std::vector<glare::LinearTap> up_cols_, up_rows_;
+  // Where each frame pixel reads the halved frame when spread() brings the
+  // moved light back (as cv::resize INTER_LINEAR), across and down.
+  std::shared_ptr<const retina::BilinearAxis> up_cols_, up_rows_;
   // The angle plane of the convolution (the plan's, or one at
   // plan.glare.plane_scale of its resolution, from the halved frame when
   // there is one) and its px/deg.

@@ -207,7 +207,8 @@ ParamSet run_parameters(Settings& s) {
   set.add(number("acuity-cell", "deg", "spatial spacing of the acuity noise grid", meso, &s.acuity.noise_cell_deg, 0.01,
                  30));
   set.add(number("acuity-pyramid-from", "px",
-                 "blurs of the acuity bands at least this wide run at reduced resolution; 0: all at full resolution",
+                 "blurs of the acuity bands and of the local mesopic luminance at least this wide run at reduced "
+                 "resolution; 0: all at full resolution",
                  meso, &s.acuity.pyramid_from_px, 0, 1e4));
   set.add(number("acuity-period", "s", "temporal spacing of the acuity noise grid", meso, &s.acuity.noise_period_s,
                  0.01, 60));

@@ -239,6 +239,34 @@ class Frames(unittest.TestCase):
             self.assertTrue(np.array_equal(expected[n], got[n]), f"frame {n}")
 
 
+    def test_independent_eyes_on_two_threads_give_what_each_gives_alone(self):
+        # Two eyes of different viewers, each fed on its own thread at the
+        # same time (the GIL is let go while a frame is processed): each
+        # gives the frames it gives alone.
+        log = gaze_log()
+        settings = [dict(quality="fast"), dict(quality="balanced", viewer_age=70)]
+        alone = []
+        for kw in settings:
+            eye = eyestream.Eye(W, H, FPS, **kw)
+            alone.append([eye.process(scene(n), samples_of_frame(log, n)).copy() for n in range(FRAMES)])
+        together = [[None] * FRAMES for _ in settings]
+
+        def feed(i):
+            eye = eyestream.Eye(W, H, FPS, **settings[i])
+            for n in range(FRAMES):
+                together[i][n] = eye.process(scene(n), samples_of_frame(log, n)).copy()
+
+        threads = [threading.Thread(target=feed, args=(i,)) for i in range(len(settings))]
+        for t in threads:
+            t.start()
+        for t in threads:
+            t.join()
+        for i in range(len(settings)):
+            for n in range(FRAMES):
+                self.assertTrue(np.array_equal(alone[i][n], together[i][n]), f"eye {i}, frame {n}")
+        self.assertFalse(np.array_equal(alone[0][FRAMES - 1], alone[1][FRAMES - 1]), "two different eyes")
+
+
 class StateAndErrors(unittest.TestCase):
     def test_a_restored_eye_goes_on_bit_for_bit(self):
         log = gaze_log()
