@@ -63,8 +63,8 @@ void BM_EncodeDithered8(benchmark::State& state) {
 }
 
 // The afterimage composite of a 1080p frame: maps the frame's size
-// (argument 1) or reduced to a quarter each way (4), as the rectilinear
-// projection draws them; a third of their pixels at rest.
+// (argument 1) or reduced to a quarter each way (4), as `fast` draws them
+// under the rectilinear projection; a third of their rows at rest.
 void BM_AfterimageComposite(benchmark::State& state) {
   cv::setNumThreads(2);
   const int reduce = int(state.range(0));

@@ -72,6 +72,35 @@ TEST(LocalMesopic, ColouredLightsKeepTheirHueOnADarkRoad) {
   EXPECT_GT(hue_difference(hue_deg(old.at<cv::Vec3f>(60, 80)), hue_deg(colours[0])), 30.0);
 }
 
+// With --acuity-pyramid-from set (fast: 1.5 px) a low-pass at least that
+// wide runs on the frame reduced by a power of two and rho is read back
+// bilinearly: the lights keep the colours the full-resolution low-pass
+// gives them.
+TEST(LocalMesopic, HeldReducedTheLowPassKeepsTheLightsColours) {
+  const cv::Vec3f colours[3] = {{1, 0, 0}, {0, 1, 0}, {1, 0.45f, 0}};
+  cv::Mat scene = test::constant_frame(kW, kH, {kRoad, kRoad, kRoad});
+  for (int i = 0; i < 3; ++i) {
+    const cv::Vec3f c = colours[i] * (1000.0f / (0.2126f * colours[i][0] + 0.7152f * colours[i][1] + 0.0722f * colours[i][2]));
+    cv::circle(scene, {80 + 80 * i, 60}, 3, cv::Scalar(c[0], c[1], c[2]), cv::FILLED);
+  }
+  Settings full;
+  full.mesopic_colour.local_sigma_deg = 0.5;
+  full.acuity.pyramid_from_px = 0.0;
+  const double sigma_px = 0.5 * test::plan_for(full, kW, kH).pixels_per_degree;
+  ASSERT_GE(sigma_px, 3.0) << "wide enough to be reduced by 4";
+  Settings reduced = full;
+  reduced.acuity.pyramid_from_px = 1.5;
+  reduced.acuity.noise_gain = full.acuity.noise_gain;
+  double a = 0, b = 0;
+  const cv::Mat exact = watch(scene, 160, 150, 1.0, &a, full), held = watch(scene, 160, 150, 1.0, &b, reduced);
+  EXPECT_GT(cv::norm(exact, held, cv::NORM_INF), 0.0) << "the reduced path ran";
+  for (int i = 0; i < 3; ++i) {
+    const cv::Vec3f e = exact.at<cv::Vec3f>(60, 80 + 80 * i), h = held.at<cv::Vec3f>(60, 80 + 80 * i);
+    EXPECT_LT(hue_difference(hue_deg(h), hue_deg(colours[i])), 15.0) << i << ": " << h;
+    EXPECT_LT(hue_difference(hue_deg(h), hue_deg(e)), 3.0) << i << ": " << h << " against " << e;
+  }
+}
+
 TEST(LocalMesopic, TheHaloKeepsItsColourOrderWhenDarkAdapted) {
   cv::Mat scene = test::constant_frame(kW, kH, {kRoad, kRoad, kRoad});
   cv::circle(scene, {160, 90}, 2, cv::Scalar::all(1e4), cv::FILLED);
