@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <optional>
 #include <vector>
 
 #include "retina/bilinear_axis.hpp"
+#include "retina/bit_masks.hpp"
 #include "retina/enlarged_rows.hpp"
 #include "retina/cone_space.hpp"
 #include "retina/vector_clones.hpp"
@@ -37,21 +37,6 @@ struct Rows3 {
   }
 };
 
-std::uint32_t bits_of(float v) {
-  std::uint32_t b;
-  std::memcpy(&b, &v, sizeof b);
-  return b;
-}
-
-// a where mask is all ones, b where it is 0: a blend of bits, which keeps
-// the loop free of branches (and so vectorised).
-float blend(std::uint32_t mask, float a, float b) {
-  const std::uint32_t r = (bits_of(a) & mask) | (bits_of(b) & ~mask);
-  float v;
-  std::memcpy(&v, &r, sizeof v);
-  return v;
-}
-
 Rows3 rows3(const cv::Matx33f& a) {
   Rows3 r;
   for (int i = 0; i < 9; ++i) r.m[i] = a.val[i];
@@ -71,13 +56,13 @@ void composite_row(const float* j, const float* g, const float* b, Rows3 to_lms,
     const float e0 = l0 + l0 * g0, e1 = l1 + l1 * g1, e2 = l2 + l2 * g2;
     // At rest: every map value +0 or -0 (no bit but the sign set).
     const std::uint32_t any = (bits_of(g0) | bits_of(g1) | bits_of(g2) | bits_of(b0) | bits_of(b1) | bits_of(b2)) << 1;
-    const std::uint32_t rest = 0u - std::uint32_t(any == 0u);
+    const std::uint32_t rest = mask_if(any == 0u);
     const float v0 = to_rgb.row(0, e0, e1, e2) + h.row(0, b0, b1, b2);
     const float v1 = to_rgb.row(1, e0, e1, e2) + h.row(1, b0, b1, b2);
     const float v2 = to_rgb.row(2, e0, e1, e2) + h.row(2, b0, b1, b2);
-    o[3 * x] = blend(rest, j0, v0);
-    o[3 * x + 1] = blend(rest, j1, v1);
-    o[3 * x + 2] = blend(rest, j2, v2);
+    o[3 * x] = pick(rest, j0, v0);
+    o[3 * x + 1] = pick(rest, j1, v1);
+    o[3 * x + 2] = pick(rest, j2, v2);
   }
 }
 

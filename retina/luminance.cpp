@@ -1,9 +1,8 @@
 #include "retina/luminance.hpp"
 
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 
+#include "retina/bit_masks.hpp"
 #include "retina/vector_clones.hpp"
 
 namespace eyestream::retina {
@@ -17,13 +16,7 @@ EYESTREAM_VECTOR_CLONES
 void floored_row(const float* in, float floor, float* out, int n) {
   for (int x = 0; x < n; ++x) {
     const float v = kPhotopicR * in[3 * x] + kPhotopicG * in[3 * x + 1] + kPhotopicB * in[3 * x + 2];
-    std::uint32_t vb, fb;
-    std::memcpy(&vb, &v, sizeof vb);
-    std::memcpy(&fb, &floor, sizeof fb);
-    const bool keep = (v > floor) & ((vb & 0x7f800000u) != 0x7f800000u);
-    const std::uint32_t mask = 0u - std::uint32_t(keep);
-    const std::uint32_t r = (vb & mask) | (fb & ~mask);
-    std::memcpy(&out[x], &r, sizeof r);
+    out[x] = pick(mask_if((v > floor) & finite_bits(v)), v, floor);
   }
 }
 

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <vector>
 
+#include "retina/bit_masks.hpp"
 #include "retina/luminance.hpp"
 #include "retina/vector_clones.hpp"
 
@@ -23,30 +23,6 @@ void tone_map(const cv::Mat& rgb, const ToneCurve& curve, cv::Mat& out) {
 
 namespace {
 
-std::uint32_t bits_of(float v) {
-  std::uint32_t b;
-  std::memcpy(&b, &v, sizeof b);
-  return b;
-}
-
-// v where mask is all ones, else 0: by bits, not a branch, so the loops
-// stay vectorised.
-float masked(std::uint32_t mask, float v) {
-  const std::uint32_t r = bits_of(v) & mask;
-  float out;
-  std::memcpy(&out, &r, sizeof out);
-  return out;
-}
-
-float pick(std::uint32_t mask, float a, float b) {
-  const std::uint32_t r = (bits_of(a) & mask) | (bits_of(b) & ~mask);
-  float out;
-  std::memcpy(&out, &r, sizeof out);
-  return out;
-}
-
-std::uint32_t all_ones_if(bool c) { return 0u - std::uint32_t(c); }
-
 // What a row's pixels need: the photopic luminance Yp, the mesopic Ym and
 // the tone curve's power argument (sigma / Ym or its inverse, whichever is
 // at most 1; 1 for a pixel shown black).
@@ -59,8 +35,8 @@ void luminances_row(const float* in, const float* rho, float w0, float w1, float
     const float ys = ((0.0f + w0 * p0) + w1 * p1) + w2 * p2;  // as cv::Vec::dot
     const float ym = rho[x] * yp + (1.0f - rho[x]) * ys;  // Purkinje: Jacobs et al. 2015 sec. 2.3.1
     const float ratio = sigma / ym;
-    const bool shown = (yp > 0.0f) & (ym > 0.0f) & ((bits_of(ym) & 0x7f800000u) != 0x7f800000u);
-    arg[x] = pick(all_ones_if(shown), pick(all_ones_if(ratio <= 1.0f), ratio, 1.0f / ratio), 1.0f);
+    const bool shown = (yp > 0.0f) & (ym > 0.0f) & finite_bits(ym);
+    arg[x] = pick(mask_if(shown), pick(mask_if(ratio <= 1.0f), ratio, 1.0f / ratio), 1.0f);
     yp_out[x] = yp;
     ym_out[x] = ym;
   }
@@ -74,15 +50,15 @@ void colour_row(const float* in, const float* rho, const float* yp, const float*
                 float t0, float t1, float t2, bool hue_shift, float* out, int n) {
   for (int x = 0; x < n; ++x) {
     const float ratio = sigma / ym[x];
-    const float r = pick(all_ones_if(ratio <= 1.0f), 1.0f / (1.0f + q[x]), q[x] / (q[x] + 1.0f));
-    const bool shown = (yp[x] > 0.0f) & (ym[x] > 0.0f) & ((bits_of(ym[x]) & 0x7f800000u) != 0x7f800000u);
-    const std::uint32_t keep = all_ones_if(shown);
+    const float r = pick(mask_if(ratio <= 1.0f), 1.0f / (1.0f + q[x]), q[x] / (q[x] + 1.0f));
+    const bool shown = (yp[x] > 0.0f) & (ym[x] > 0.0f) & finite_bits(ym[x]);
+    const std::uint32_t keep = mask_if(shown);
     const float dim = 1.0f - rho[x];
-    const float share = pick(all_ones_if(hue_shift), rho[x], 1.0f);
+    const float share = pick(mask_if(hue_shift), rho[x], 1.0f);
     const float s = share * r / yp[x];
-    out[3 * x] = masked(keep, in[3 * x] * s + (t0 * dim) * r);
-    out[3 * x + 1] = masked(keep, in[3 * x + 1] * s + (t1 * dim) * r);
-    out[3 * x + 2] = masked(keep, in[3 * x + 2] * s + (t2 * dim) * r);
+    out[3 * x] = pick(keep, in[3 * x] * s + (t0 * dim) * r, 0.0f);
+    out[3 * x + 1] = pick(keep, in[3 * x + 1] * s + (t1 * dim) * r, 0.0f);
+    out[3 * x + 2] = pick(keep, in[3 * x + 2] * s + (t2 * dim) * r, 0.0f);
   }
 }
 

@@ -43,6 +43,16 @@ Clip load_clip(const test::ScratchDir& dir) {
   return c;
 }
 
+// The headlights sample, 64x36 for `seconds`, rendered into dir/h and
+// loaded (empty when `eyestream sample` fails).
+Clip sample_clip(const test::ScratchDir& dir, double seconds) {
+  if (test::run_eyestream("sample headlights -o " + (dir / "h") + " --width 64 --height 36 --duration " +
+                          std::to_string(seconds))
+          .exit_code != 0)
+    return {};
+  return load_clip(dir);
+}
+
 // A gaze log moving every 10 ms, with a blink across the end of frame 2
 // and lost samples across the end of frame 5 (30 frames/s).
 void write_gaze_with_blink_and_loss(const std::string& path) {
@@ -185,10 +195,8 @@ TEST(LibraryApi, SettingsByTheCommandLinesNamesAndItsMessages) {
 
 TEST(LibraryApi, StateRestoresAndPointersWork) {
   test::ScratchDir dir;
-  ASSERT_EQ(test::run_eyestream("sample headlights -o " + (dir / "h") + " --width 64 --height 36 --duration 0.3")
-                .exit_code,
-            0);
-  const Clip clip = load_clip(dir);
+  const Clip clip = sample_clip(dir, 0.3);
+  ASSERT_FALSE(clip.frames.empty());
   // The state is a snapshot: taken after frame 3, restored after the
   // saving eye has gone on, it still continues from frame 4.
   Eye a(64, 36, clip.fps), b(64, 36, clip.fps);
@@ -213,10 +221,8 @@ TEST(LibraryApi, StateRestoresAndPointersWork) {
 // gives alone (the model's shared tables and FFT plans are made under locks).
 TEST(LibraryApi, IndependentEyesOnTwoThreadsGiveWhatEachGivesAlone) {
   test::ScratchDir dir;
-  ASSERT_EQ(test::run_eyestream("sample headlights -o " + (dir / "h") + " --width 64 --height 36 --duration 0.3")
-                .exit_code,
-            0);
-  const Clip clip = load_clip(dir);
+  const Clip clip = sample_clip(dir, 0.3);
+  ASSERT_FALSE(clip.frames.empty());
   const std::vector<std::map<std::string, std::string>> settings = {{{"quality", "fast"}},
                                                                     {{"quality", "reference"}, {"viewer-age", "70"}}};
   std::vector<std::vector<cv::Mat>> alone(settings.size()), together(settings.size());

@@ -1,10 +1,9 @@
 #include "pipeline/eye/pixel_checks.hpp"
 
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 #include <vector>
 
+#include "retina/bit_masks.hpp"
 #include "retina/vector_clones.hpp"
 
 namespace eyestream::pipeline {
@@ -15,13 +14,9 @@ namespace {
 // ones, tested by bits so the loop is vectorised (vector_clones.hpp).
 EYESTREAM_VECTOR_CLONES
 int nonfinite_in_row(const float* p, int pixels) {
-  const auto bad = [](float v) {
-    std::uint32_t b;
-    std::memcpy(&b, &v, sizeof b);
-    return (b & 0x7f800000u) == 0x7f800000u;
-  };
   int n = 0;
-  for (int x = 0; x < pixels; ++x) n += int(bad(p[3 * x]) | bad(p[3 * x + 1]) | bad(p[3 * x + 2]));
+  for (int x = 0; x < pixels; ++x)
+    n += int(!(retina::finite_bits(p[3 * x]) & retina::finite_bits(p[3 * x + 1]) & retina::finite_bits(p[3 * x + 2])));
   return n;
 }
 

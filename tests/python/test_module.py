@@ -94,23 +94,30 @@ def read_png_rgb8(path):
     return out.reshape(height, width, 3)
 
 
+def command_line_frames(d, log, *options):
+    """`eyestream run` on the scene's frames (raw standard input) with `log`
+    as its gaze CSV and `options`: the folder of its PNGs."""
+    with open(os.path.join(d, "gaze.csv"), "w") as f:
+        f.write("t,x,y,event\n")
+        for t, x, y, closed in log:
+            f.write(f"{t:.3f},{x:.1f},{y:.1f},{'blink' if closed else ''}\n")
+    raw = b"".join(scene(n).tobytes() for n in range(FRAMES))
+    out = os.path.join(d, "out")
+    cmd = [os.environ["EYESTREAM"], "run", "-i", "-", "--size", f"{W}x{H}", "--fps", str(FPS),
+           "--gaze", os.path.join(d, "gaze.csv"), *options, "-o", os.path.join(out, "%05d.png")]
+    subprocess.run(cmd, input=raw, check=True, capture_output=True)
+    return out
+
+
 class MatchesTheCommandLine(unittest.TestCase):
     def test_every_frame_is_the_command_lines_byte_for_byte(self):
         log = gaze_log()
         with tempfile.TemporaryDirectory() as d:
-            with open(os.path.join(d, "gaze.csv"), "w") as f:
-                f.write("t,x,y,event\n")
-                for t, x, y, closed in log:
-                    f.write(f"{t:.3f},{x:.1f},{y:.1f},{'blink' if closed else ''}\n")
-            raw = b"".join(scene(n).tobytes() for n in range(FRAMES))
-            cmd = [os.environ["EYESTREAM"], "run", "-i", "-", "--size", f"{W}x{H}", "--fps", str(FPS),
-                   "--gaze", os.path.join(d, "gaze.csv"), "--viewer-age", "70", "--quality", "fast",
-                   "-o", os.path.join(d, "out", "%05d.png")]
-            subprocess.run(cmd, input=raw, check=True, capture_output=True)
+            out = command_line_frames(d, log, "--viewer-age", "70", "--quality", "fast")
             eye = eyestream.Eye(W, H, FPS, viewer_age=70, quality="fast")
             for n in range(FRAMES):
                 eye.process(scene(n), [(t, x, y, c) for t, x, y, c in samples_of_frame(log, n)])
-                expected = read_png_rgb8(os.path.join(d, "out", f"{n:05d}.png"))
+                expected = read_png_rgb8(os.path.join(out, f"{n:05d}.png"))
                 self.assertTrue(np.array_equal(eye.code, expected), f"frame {n}")
             self.assertTrue(any(r[3] for r in log), "the log has a blink")
 
@@ -119,19 +126,12 @@ class MatchesTheCommandLine(unittest.TestCase):
         # sample back to frame 0, and so does an eye given the whole recording.
         log = [r for r in gaze_log() if r[0] >= 0.05]
         with tempfile.TemporaryDirectory() as d:
-            with open(os.path.join(d, "gaze.csv"), "w") as f:
-                f.write("t,x,y,event\n")
-                for t, x, y, closed in log:
-                    f.write(f"{t:.3f},{x:.1f},{y:.1f},{'blink' if closed else ''}\n")
-            raw = b"".join(scene(n).tobytes() for n in range(FRAMES))
-            cmd = [os.environ["EYESTREAM"], "run", "-i", "-", "--size", f"{W}x{H}", "--fps", str(FPS),
-                   "--gaze", os.path.join(d, "gaze.csv"), "--quality", "fast", "-o", os.path.join(d, "out", "%05d.png")]
-            subprocess.run(cmd, input=raw, check=True, capture_output=True)
+            out = command_line_frames(d, log, "--quality", "fast")
             eye = eyestream.Eye(W, H, FPS, quality="fast")
             eye.set_gaze(log)
             for n in range(FRAMES):
                 eye.process(scene(n))
-                expected = read_png_rgb8(os.path.join(d, "out", f"{n:05d}.png"))
+                expected = read_png_rgb8(os.path.join(out, f"{n:05d}.png"))
                 self.assertTrue(np.array_equal(eye.code, expected), f"frame {n}")
                 if n == 0:
                     self.assertEqual(eye.report["gaze_x"], log[0][1], "the first sample held back to frame 0")
