@@ -4,6 +4,7 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
+#include "retina/thread_scratch.hpp"
 #include "retina/vector_clones.hpp"
 
 namespace eyestream::retina {
@@ -73,15 +74,15 @@ void gaussian_blur(const cv::Mat& src, cv::Mat& dst, double sigma) {
   cv::parallel_for_(
       cv::Range(0, rows),
       [&](const cv::Range& range) {
-        std::vector<float> ring(size_t(span) * size_t(n));
-        const auto slot = [&](int j) { return &ring[size_t((j - range.start + span) % span) * size_t(n)]; };
+        float* ring = thread_scratch<struct BlurRing, float>(size_t(span) * size_t(n));
+        const auto slot = [&](int j) { return ring + size_t((j - range.start + span) % span) * size_t(n); };
         const auto fill = [&](int j) { blur_row(input.ptr<float>(std::clamp(j, 0, rows - 1)), slot(j), cols, channels, w); };
         for (int j = range.start - r; j < range.start + r; ++j) fill(j);
-        std::vector<const float*> rows_at(static_cast<size_t>(span));
+        const float** rows_at = thread_scratch<struct BlurRows, const float*>(size_t(span));
         for (int y = range.start; y < range.end; ++y) {
           fill(y + r);
           for (int t = -r; t <= r; ++t) rows_at[size_t(t + r)] = slot(y + t);
-          blur_column(&rows_at[size_t(r)], dst.ptr<float>(y), n, w);
+          blur_column(rows_at + r, dst.ptr<float>(y), n, w);
         }
       },
       double(std::max(1, cv::getNumThreads()) * 2));

@@ -1,5 +1,6 @@
 #include "pipeline/eye/frame_buffer_pool.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <map>
 #include <mutex>
@@ -10,13 +11,23 @@ namespace eyestream::pipeline {
 
 namespace {
 
-constexpr size_t kPooledFrom = 256 * 1024;  // smaller buffers: malloc reuses them well already
+constexpr size_t kPooledFrom = 64 * 1024;  // smaller buffers: malloc reuses them well already
 constexpr size_t kAlignment = 64;           // as OpenCV's own allocator
 
-// A cv::MatAllocator that pools freed buffers by exact size. The loop's
+// The size a buffer of `bytes` is given: rounded up to one of eight steps
+// per power of two (at most 12.5 % more), so buffers whose size follows the
+// gaze a little (a region of the retina, a near field's box) share a step.
+size_t size_step(size_t bytes) {
+  size_t power = 1;
+  while (power <= bytes / 2) power *= 2;
+  const size_t step = std::max<size_t>(power / 8, kAlignment);
+  return (bytes + step - 1) / step * step;
+}
+
+// A cv::MatAllocator that pools freed buffers by size step. The loop's
 // sizes repeat frame after frame, so the pool holds about one frame's
-// working set; a size never asked for again stays pooled until exit (a run
-// has few distinct sizes).
+// working set; a step never asked for again stays pooled until exit (a run
+// has few distinct steps).
 class FrameBufferPool final : public cv::MatAllocator {
  public:
   cv::UMatData* allocate(int dims, const int* sizes, int type, void* data0, size_t* step, cv::AccessFlag,
@@ -57,6 +68,7 @@ class FrameBufferPool final : public cv::MatAllocator {
  private:
   uchar* take(size_t bytes) const {
     if (bytes >= kPooledFrom) {
+      bytes = size_step(bytes);
       std::lock_guard<std::mutex> lock(mutex_);
       auto it = free_.find(bytes);
       if (it != free_.end() && !it->second.empty()) {
@@ -76,6 +88,7 @@ class FrameBufferPool final : public cv::MatAllocator {
       std::free(p);
       return;
     }
+    bytes = size_step(bytes);
     std::lock_guard<std::mutex> lock(mutex_);
     free_[bytes].push_back(p);
     pooled_ += bytes;
