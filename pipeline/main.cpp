@@ -14,6 +14,7 @@
 #include "pipeline/eye/frame_buffer_pool.hpp"
 #include "pipeline/bench/bench_chart.hpp"
 #include "pipeline/bench/bench_command.hpp"
+#include "pipeline/bench/peers/bench_peers.hpp"
 #include "pipeline/run/chunk_plan.hpp"
 #include "pipeline/tools/command_reference.hpp"
 #include "pipeline/tools/compare_command.hpp"
@@ -211,6 +212,8 @@ int main(int argc, char** argv) {
   bench_cmd->add_option("--flare-model", bench.flare_model, "every case's flare lines: drawn or wave (run --help)")
       ->check(CLI::IsMember({"drawn", "wave"}))
       ->capture_default_str();
+  bench_cmd->add_flag("--peers", bench.peers,
+                      "also time pfstmo_pattanaik00 -t and Blender's Fog Glow on the same frames, where installed");
   bench_cmd->add_option("--csv", bench.csv, "write the table as CSV");
   bench_cmd->add_option("--png", bench.png, "draw error against time per frame (PNG)");
   bench_cmd->add_flag("-y,--overwrite", replace_files, "replace the CSV and the chart if they exist");
@@ -270,6 +273,7 @@ int main(int argc, char** argv) {
       std::printf("%s", bench_table(rows).c_str());
       if (!bench.csv.empty()) write_bench_csv(rows, bench.csv);
       if (!bench.png.empty()) draw_bench_chart(rows, bench.png);
+      if (bench.peers) std::printf("\n%s", peers_table(run_peers(bench)).c_str());
     } else if (*curves_cmd) {
       curve_params.apply("");
       require_extension(curves_output, {".png"}, "curves -o");

@@ -26,7 +26,9 @@ struct BenchCase {
 };
 
 // Runs every frame of `scene` through an eye with `settings` (threads as
-// cv::setNumThreads was left) and encodes each output as a sink would.
+// cv::setNumThreads was left) and encodes each output as a sink would,
+// after one untimed frame through another eye (the first frame of a
+// process pays for growing the buffer pool and the threads' scratch).
 BenchCase run_bench_case(const BenchScene& scene, const Settings& settings);
 
 }  // namespace eyestream::pipeline

@@ -13,22 +13,6 @@ namespace eyestream::pipeline {
 
 namespace {
 
-std::vector<std::string> split(const std::string& text) {
-  std::vector<std::string> out;
-  std::stringstream in(text);
-  for (std::string item; std::getline(in, item, ',');)
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
-
-Settings preset_settings(const std::string& preset, bool skip, const std::string& flare_model = "drawn") {
-  Settings s;
-  apply_quality_preset(preset, s);
-  s.skip = skip;
-  s.flare_model = flare_model;
-  return s;
-}
-
 BenchRow row_of(const std::string& scene, const std::string& size, const std::string& preset, bool skip,
                 BenchCase figures, bool quiet) {
   figures.shown.clear();
@@ -76,6 +60,22 @@ std::string fixed(double v, int decimals) {
 
 }  // namespace
 
+std::vector<std::string> split_list(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+Settings preset_settings(const std::string& preset, bool skip, const std::string& flare_model) {
+  Settings s;
+  apply_quality_preset(preset, s);
+  s.skip = skip;
+  s.flare_model = flare_model;
+  return s;
+}
+
 cv::Size parse_frame_size(const std::string& text) {
   if (text == "720p") return {1280, 720};
   if (text == "1080p") return {1920, 1080};
@@ -91,11 +91,11 @@ std::vector<BenchRow> run_bench(const BenchRequest& q) {
   if (q.frames < 2) throw UsageError("--frames must be at least 2");
   if (q.flare_model != "drawn" && q.flare_model != "wave")
     throw UsageError("--flare-model must be drawn or wave, not '" + q.flare_model + "'");
-  const std::vector<std::string> sizes = split(q.sizes), presets = split(q.presets);
+  const std::vector<std::string> sizes = split_list(q.sizes), presets = split_list(q.presets);
   if (sizes.empty() || presets.empty()) throw UsageError("--sizes and --presets need at least one entry");
   for (const std::string& p : presets) preset_settings(p, true);  // names checked before any work
   for (const std::string& s : sizes) parse_frame_size(s);
-  const std::vector<std::string> scenes = split(q.scene);
+  const std::vector<std::string> scenes = split_list(q.scene);
   if (scenes.empty()) throw UsageError("--scene needs at least one scene");
   for (const std::string& name : scenes) samples::find_scene(name);  // names checked before any work
   std::vector<BenchRow> rows;

@@ -19,6 +19,7 @@ struct BenchRequest {
   std::string csv, png;    // where the table and the chart go ("": not written)
   bool quiet = false;      // no line per case on stderr
   std::string flare_model = "drawn";  // every case's --flare-model
+  bool peers = false;  // also time the peers (bench_peers.hpp)
 };
 
 struct BenchRow {
@@ -35,6 +36,12 @@ std::vector<BenchRow> run_bench(const BenchRequest& request);
 // The rows as an aligned text table, and as CSV (with a header).
 std::string bench_table(const std::vector<BenchRow>& rows);
 void write_bench_csv(const std::vector<BenchRow>& rows, const std::string& path);
+
+// The items of a comma-separated list (empty items dropped).
+std::vector<std::string> split_list(const std::string& text);
+
+// A preset's settings for a bench case (UsageError for an unknown preset).
+Settings preset_settings(const std::string& preset, bool skip, const std::string& flare_model = "drawn");
 
 // Width and height of "720p", "1080p", "4k" or "WxH"; UsageError otherwise.
 cv::Size parse_frame_size(const std::string& text);

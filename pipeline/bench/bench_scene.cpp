@@ -1,39 +1,24 @@
 #include "pipeline/bench/bench_scene.hpp"
 
 #include <filesystem>
-#include <unistd.h>
 
 #include "io/gaze_import.hpp"
 #include "io/source_factory.hpp"
+#include "pipeline/bench/scratch_folder.hpp"
 #include "samples/scene.hpp"
 
 namespace eyestream::pipeline {
 
-namespace {
-
-// A scratch folder removed when it goes out of scope.
-struct Scratch {
-  Scratch() {
-    static int counter = 0;
-    path = std::filesystem::temp_directory_path() /
-           ("eyestream-bench-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-    std::filesystem::remove_all(path);
-    std::filesystem::create_directories(path);
-  }
-  ~Scratch() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path, ignored);
-  }
-  std::filesystem::path path;
-};
-
-}  // namespace
-
 BenchScene load_bench_scene(const std::string& scene, int width, int height, int frames, double luminance_cd_m2) {
+  const ScratchFolder dir;
+  return load_bench_scene_in(dir.path(), scene, width, height, frames, luminance_cd_m2);
+}
+
+BenchScene load_bench_scene_in(const std::filesystem::path& dir, const std::string& scene, int width, int height,
+                               int frames, double luminance_cd_m2) {
   constexpr double kFps = 30.0;
-  const Scratch dir;
   samples::SceneOptions o;
-  o.out_dir = dir.path.string();
+  o.out_dir = dir.string();
   o.width = width;
   o.height = height;
   o.fps = kFps;
@@ -43,12 +28,12 @@ BenchScene load_bench_scene(const std::string& scene, int width, int height, int
 
   BenchScene b;
   b.name = scene;
-  const auto source = io::open_source((dir.path / "frames").string(), io::SourceOptions{});
+  const auto source = io::open_source((dir / "frames").string(), io::SourceOptions{});
   b.info = source->info();
   io::GazeImportOptions g;
   g.frame_width = width;
   g.frame_height = height;
-  b.gaze = io::read_gaze((dir.path / "gaze.csv").string(), g);
+  b.gaze = io::read_gaze((dir / "gaze.csv").string(), g);
   while (auto f = source->next()) {
     f->rgb = f->rgb.clone();
     b.frames.push_back(std::move(*f));

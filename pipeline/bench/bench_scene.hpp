@@ -2,6 +2,7 @@
 // given size and held in memory, so reading files is not timed.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -24,5 +25,10 @@ struct BenchScene {
 // its gaze log, and removes the folder. `luminance_cd_m2` as for `sample`.
 BenchScene load_bench_scene(const std::string& scene, int width, int height, int frames,
                             double luminance_cd_m2 = 0.0);
+
+// The same, rendered into `dir` (dir/frames/00000.exr on, dir/gaze.csv),
+// which is kept: for programs other than eyestream to read.
+BenchScene load_bench_scene_in(const std::filesystem::path& dir, const std::string& scene, int width, int height,
+                               int frames, double luminance_cd_m2 = 0.0);
 
 }  // namespace eyestream::pipeline
