@@ -1,5 +1,7 @@
 #include "pipeline/eye/eye_simulator.hpp"
 
+#include "pipeline/eye/frame_buffer_pool.hpp"
+
 #include <cmath>
 
 #include "glare/pupil.hpp"
@@ -119,6 +121,7 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
     report->times = times;
     if (plan_.report) fill_glare_report(scene, last, target_mask, recorded, *report);
   }
+  trim_frame_buffers();  // what the pool holds follows the frames' sizes
   return out;
 }
 

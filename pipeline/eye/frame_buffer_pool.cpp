@@ -13,6 +13,9 @@ namespace {
 
 constexpr size_t kPooledFrom = 64 * 1024;  // smaller buffers: malloc reuses them well already
 constexpr size_t kAlignment = 64;           // as OpenCV's own allocator
+// Trims (frames) a pooled buffer may sit unused before it is freed: a
+// stage that skips a frame finds its buffers still there.
+constexpr unsigned long kIdleTrims = 2;
 
 // The size a buffer of `bytes` is given: rounded up to one of eight steps
 // per power of two (at most 12.5 % more), so buffers whose size follows the
@@ -72,7 +75,7 @@ class FrameBufferPool final : public cv::MatAllocator {
       std::lock_guard<std::mutex> lock(mutex_);
       auto it = free_.find(bytes);
       if (it != free_.end() && !it->second.empty()) {
-        void* p = it->second.back();
+        void* p = it->second.back().block;
         it->second.pop_back();
         pooled_ -= bytes;
         return static_cast<uchar*>(p);
@@ -90,12 +93,36 @@ class FrameBufferPool final : public cv::MatAllocator {
     }
     bytes = size_step(bytes);
     std::lock_guard<std::mutex> lock(mutex_);
-    free_[bytes].push_back(p);
+    free_[bytes].push_back({p, generation_});
     pooled_ += bytes;
   }
 
+ public:
+  // Frees the buffers no frame has taken through the last kIdleTrims trims.
+  void trim() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (auto& [bytes, idle] : free_) {
+      // Taken from the back, so the longest idle are at the front.
+      size_t kept = 0;
+      while (kept < idle.size() && idle[kept].since + kIdleTrims <= generation_) {
+        std::free(idle[kept].block);
+        pooled_ -= bytes;
+        ++kept;
+      }
+      idle.erase(idle.begin(), idle.begin() + long(kept));
+    }
+    ++generation_;
+  }
+
+ private:
+
   mutable std::mutex mutex_;
-  mutable std::map<size_t, std::vector<void*>> free_;
+  struct Idle {
+    void* block;
+    unsigned long since;  // the generation it was given back in
+  };
+  mutable std::map<size_t, std::vector<Idle>> free_;
+  mutable unsigned long generation_ = 0;  // trims so far
   mutable size_t pooled_ = 0;
 };
 
@@ -113,5 +140,7 @@ void reuse_frame_buffers() {
 }
 
 size_t pooled_frame_buffer_bytes() { return pool().pooled(); }
+
+void trim_frame_buffers() { pool().trim(); }
 
 }  // namespace eyestream::pipeline

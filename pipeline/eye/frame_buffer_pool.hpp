@@ -14,6 +14,12 @@ namespace eyestream::pipeline {
 // now on (call before the first frame; calling again does nothing).
 void reuse_frame_buffers();
 
+// Frees the buffers held for reuse that no frame has taken through the
+// last two calls: the eye calls it after each frame, so the pool holds about
+// a frame's working set, not every size a run has ever asked for (regions
+// that follow the gaze take many sizes over a long run).
+void trim_frame_buffers();
+
 // Bytes held for reuse now (for tests and the bench).
 size_t pooled_frame_buffer_bytes();
 
