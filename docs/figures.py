@@ -8,7 +8,9 @@
 VALUES holds "key value" lines. The bench's figures come from the committed
 docs/bench.csv: bench.SCENE.SIZE.PRESET.{ms,fps,p99,speedup} (speedup: the
 reference's time over the preset's), and the bench table quoted in
-docs/performance.md is checked row by row against that file.
+docs/performance.md is checked row by row against that file. The peers'
+figures come from the committed docs/bench-peers.txt (`eyestream bench
+--peers`'s table): peers.SCENE.SIZE.{pattanaik,fogglow}.{peer_ms,eyestream_ms,ratio,energy}.
 """
 import csv
 import os
@@ -33,6 +35,24 @@ def bench_values(path="docs/bench.csv"):
         values[key + ".p99"] = float(r["de2000_p99"])
         values[key + ".speedup"] = reference[(r["scene"], r["size"])] / float(r["filter_ms"])
     return rows, values
+
+
+PEER_ROW = re.compile(r"^(pfstmo_pattanaik00 -t|blender fog glow) +(\S+) +(\S+) +([0-9.]+) +([0-9.]+) +([0-9.]+)x "
+                      r"+[0-9]+x +(\S+)")
+
+
+def peer_values(path="docs/bench-peers.txt"):
+    values = {}
+    for line in open(path):
+        m = PEER_ROW.match(line)
+        if not m:
+            continue
+        key = f"peers.{m[2]}.{m[3]}." + ("pattanaik" if m[1].startswith("pfstmo") else "fogglow")
+        values[key + ".peer_ms"], values[key + ".eyestream_ms"] = float(m[4]), float(m[5])
+        values[key + ".ratio"] = float(m[6])
+        if m[7].endswith("%"):
+            values[key + ".energy"] = float(m[7][:-1])
+    return values
 
 
 def read_map(path="docs/figures.map"):
@@ -152,6 +172,7 @@ def main():
             values[parts[0]] = float(parts[1].rstrip(","))
     rows, bench = bench_values()
     values.update(bench)
+    values.update(peer_values())
     failures, checked, texts = [], 0, {}
     for n, path, sentence, keys, tolerance in read_map():
         text = texts.setdefault(path, open(path).read())

@@ -6,11 +6,13 @@
 #   bash docs/figures.sh --check    regenerate into a scratch folder and compare (CTest runs this):
 #                                   each quoted number within its stated tolerance (docs/figures.map),
 #                                   each picture within CIEDE2000 (eyestream compare)
-#   add --bench                     rerun `eyestream bench` too (about 2 minutes, timing: never in --check)
+#   add --bench                     rerun `eyestream bench` too, with 4K and the peers (about 20 minutes,
+#                                   and /usr/bin/time for peak memory; timing: never in --check)
 #
 # Timings are quoted as measured; --check reads them but does not judge them
 # (a noisy machine is not a failure). The bench's table and the figures
-# derived from it are checked against the committed docs/bench.csv.
+# derived from it are checked against the committed docs/bench.csv, and
+# the peers' figures against docs/bench-peers.txt.
 # Environment: EYESTREAM (the program, default build/eyestream), FIGURES_DIR
 # (scratch folder, default out/figures).
 set -euo pipefail
@@ -122,8 +124,10 @@ done
 rm -rf "$work"/city/reference "$work"/city/balanced "$work"/city/fast
 if [ "$bench" = yes ]; then
   for q in fast balanced; do
-    "$es" run -i "$work/city/frames/%05d.exr" -g "$work/city/gaze.csv" -o "$work/city/$q.mp4" --quality $q 2>&1 |
+    /usr/bin/time -o "$work/city/$q.rss" -f "%M" \
+      "$es" run -i "$work/city/frames/%05d.exr" -g "$work/city/gaze.csv" -o "$work/city/$q.mp4" --quality $q 2>&1 |
       sed -n 's/.* frames in \([0-9.]*\) s .*/city45.'$q'.seconds \1/p' >> "$values"
+    awk -v q=$q '{ printf "city45.%s.peak_mib %.0f\n", q, $1 / 1024 }' "$work/city/$q.rss" >> "$values"
   done
 fi
 
@@ -144,8 +148,11 @@ tests="$(dirname "$es")/tests/eyestream_tests"
 
 # The bench (performance.md, README): only when asked.
 if [ "$bench" = yes ]; then
-  "$es" bench -y --sizes 720p,1080p --frames 8 --csv "$work/bench.csv" --png "$work/pictures/bench.png"
-  [ "$mode" = update ] && cp "$work/bench.csv" docs/bench.csv
+  "$es" bench -y --sizes 720p,1080p,4k --frames 24 --csv "$work/bench.csv" --png "$work/pictures/bench.png"
+  # The peers beside `fast` on the same 1080p frames (docs/bench-peers.txt).
+  "$es" bench -q --sizes 1080p --presets fast --frames 24 --no-skip-study --peers | sed -n '/^peer /,$p' \
+    > "$work/bench-peers.txt"
+  [ "$mode" = update ] && cp "$work/bench.csv" docs/bench.csv && cp "$work/bench-peers.txt" docs/bench-peers.txt
 fi
 
 if [ "$mode" = update ]; then

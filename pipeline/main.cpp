@@ -204,7 +204,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   bench_cmd->add_option("--presets", bench.presets, "presets, comma-separated (reference first: the yardstick)")
       ->capture_default_str();
-  bench_cmd->add_option("--frames", bench.frames, "frames per case (the scene's story compressed into them)")
+  bench_cmd->add_option("--frames", bench.frames, "frames per case at 30 frames/s (the scene's gaze story compressed into them)")
       ->check(CLI::Range(2, 100000))
       ->capture_default_str();
   bench_cmd->add_flag("!--no-skip-study", bench.skip_study,
