@@ -10,7 +10,7 @@ docs/bench.csv: bench.SCENE.SIZE.PRESET.{ms,fps,p99,speedup} (speedup: the
 reference's time over the preset's), and the bench table quoted in
 docs/performance.md is checked row by row against that file. The peers'
 figures come from the committed docs/bench-peers.txt (`eyestream bench
---peers`'s table): peers.SCENE.SIZE.{pattanaik,fogglow}.{peer_ms,eyestream_ms,ratio,energy}.
+--peers`'s table): peers.SCENE.SIZE.{pattanaik,fogglow}.{peer_ms,io_ms,eyestream_ms,ratio,energy}.
 """
 import csv
 import os
@@ -37,21 +37,26 @@ def bench_values(path="docs/bench.csv"):
     return rows, values
 
 
-PEER_ROW = re.compile(r"^(pfstmo_pattanaik00 -t|blender fog glow) +(\S+) +(\S+) +([0-9.]+) +([0-9.]+) +([0-9.]+)x "
-                      r"+[0-9]+x +(\S+)")
+PEER_ROW = re.compile(r"^(pfstmo_pattanaik00 -t|blender fog glow) +(\S+) +(\S+) +([0-9.]+) +(\S+) +([0-9.]+) "
+                      r"+([0-9.]+)x +[0-9]+x +(\S+)")
 
 
 def peer_values(path="docs/bench-peers.txt"):
     values = {}
+    if not os.path.exists(path):
+        print(f"docs/figures.py: no {path} (docs/figures.sh --bench writes it): the peers' figures are not checked")
+        return values
     for line in open(path):
         m = PEER_ROW.match(line)
         if not m:
             continue
         key = f"peers.{m[2]}.{m[3]}." + ("pattanaik" if m[1].startswith("pfstmo") else "fogglow")
-        values[key + ".peer_ms"], values[key + ".eyestream_ms"] = float(m[4]), float(m[5])
-        values[key + ".ratio"] = float(m[6])
-        if m[7].endswith("%"):
-            values[key + ".energy"] = float(m[7][:-1])
+        values[key + ".peer_ms"], values[key + ".eyestream_ms"] = float(m[4]), float(m[6])
+        values[key + ".ratio"] = float(m[7])
+        if m[5] != "-":
+            values[key + ".io_ms"] = float(m[5])
+        if m[8].endswith("%"):
+            values[key + ".energy"] = float(m[8][:-1])
     return values
 
 

@@ -28,6 +28,10 @@ done
 es=${EYESTREAM:-build/eyestream}
 es=$(realpath "$es")
 work=${FIGURES_DIR:-out/figures}
+if [ "$bench" = yes ] && [ ! -x /usr/bin/time ]; then
+  echo "docs/figures.sh: --bench needs /usr/bin/time (Debian: time) for the runs' peak memory" >&2
+  exit 2
+fi
 rm -rf "$work" && mkdir -p "$work/pictures"
 values="$work/values.txt"
 : > "$values"
@@ -152,7 +156,11 @@ if [ "$bench" = yes ]; then
   # The peers beside `fast` on the same 1080p frames (docs/bench-peers.txt).
   "$es" bench -q --sizes 1080p --presets fast --frames 24 --no-skip-study --peers | sed -n '/^peer /,$p' \
     > "$work/bench-peers.txt"
-  [ "$mode" = update ] && cp "$work/bench.csv" docs/bench.csv && cp "$work/bench-peers.txt" docs/bench-peers.txt
+  [ "$mode" = update ] && cp "$work/bench.csv" docs/bench.csv
+  # Kept only when every peer ran (a machine without them keeps the last).
+  if [ "$mode" = update ] && ! grep -q skipped "$work/bench-peers.txt"; then
+    cp "$work/bench-peers.txt" docs/bench-peers.txt
+  fi
 fi
 
 if [ "$mode" = update ]; then

@@ -4,7 +4,6 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
-#include "retina/thread_scratch.hpp"
 #include "retina/vector_clones.hpp"
 
 namespace eyestream::retina {
@@ -74,15 +73,17 @@ void gaussian_blur(const cv::Mat& src, cv::Mat& dst, double sigma) {
   cv::parallel_for_(
       cv::Range(0, rows),
       [&](const cv::Range& range) {
-        float* ring = thread_scratch<struct BlurRing, float>(size_t(span) * size_t(n));
-        const auto slot = [&](int j) { return ring + size_t((j - range.start + span) % span) * size_t(n); };
+        // A cv::Mat, so the program's buffer pool supplies it frame after
+        // frame, whichever thread runs the stripe.
+        cv::Mat ring(span, n, CV_32F);
+        const auto slot = [&](int j) { return ring.ptr<float>((j - range.start + span) % span); };
         const auto fill = [&](int j) { blur_row(input.ptr<float>(std::clamp(j, 0, rows - 1)), slot(j), cols, channels, w); };
         for (int j = range.start - r; j < range.start + r; ++j) fill(j);
-        const float** rows_at = thread_scratch<struct BlurRows, const float*>(size_t(span));
+        std::vector<const float*> rows_at(static_cast<size_t>(span));
         for (int y = range.start; y < range.end; ++y) {
           fill(y + r);
           for (int t = -r; t <= r; ++t) rows_at[size_t(t + r)] = slot(y + t);
-          blur_column(rows_at + r, dst.ptr<float>(y), n, w);
+          blur_column(&rows_at[size_t(r)], dst.ptr<float>(y), n, w);
         }
       },
       double(std::max(1, cv::getNumThreads()) * 2));

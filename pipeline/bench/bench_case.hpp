@@ -15,6 +15,7 @@ struct BenchCase {
   StageTimes stage_ms;      // mean per frame
   double filter_ms = 0.0;   // mean per frame, every stage of the eye
   double encode_ms = 0.0;   // mean per frame, 8-bit dithered display encoding
+  double wall_ms = 0.0;     // mean per frame, the whole of the eye's process() and the encoding, by the clock
   double setup_s = 0.0;     // plan, kernels and spectra, before the first frame
   double memory_mib = 0.0;  // peak resident memory above what the process held before the case
   int frames = 0;
@@ -28,7 +29,7 @@ struct BenchCase {
 // Runs every frame of `scene` through an eye with `settings` (threads as
 // cv::setNumThreads was left) and encodes each output as a sink would,
 // after one untimed frame through another eye (the first frame of a
-// process pays for growing the buffer pool and the threads' scratch).
+// process pays for growing the buffer pool).
 BenchCase run_bench_case(const BenchScene& scene, const Settings& settings);
 
 }  // namespace eyestream::pipeline

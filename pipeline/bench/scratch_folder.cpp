@@ -1,17 +1,24 @@
 #include "pipeline/bench/scratch_folder.hpp"
 
-#include <atomic>
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
 #include <string>
-#include <unistd.h>
+#include <vector>
+
+#include "io/error.hpp"
 
 namespace eyestream::pipeline {
 
 ScratchFolder::ScratchFolder() {
-  static std::atomic<int> counter{0};
-  path_ = std::filesystem::temp_directory_path() /
-          ("eyestream-bench-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-  std::filesystem::remove_all(path_);
-  std::filesystem::create_directories(path_);
+  // mkdtemp: a new folder of a name no one could have taken first, only
+  // this user's (the peers run a script from it).
+  std::string pattern = (std::filesystem::temp_directory_path() / "eyestream-bench-XXXXXX").string();
+  std::vector<char> name(pattern.begin(), pattern.end());
+  name.push_back('\0');
+  if (!::mkdtemp(name.data()))
+    throw OutputError(pattern + ": cannot make a scratch folder: " + std::strerror(errno));
+  path_ = name.data();
 }
 
 ScratchFolder::~ScratchFolder() {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <iterator>
 #include <map>
 #include <mutex>
 #include <opencv2/core.hpp>
@@ -13,9 +14,12 @@ namespace {
 
 constexpr size_t kPooledFrom = 64 * 1024;  // smaller buffers: malloc reuses them well already
 constexpr size_t kAlignment = 64;           // as OpenCV's own allocator
-// Trims (frames) a pooled buffer may sit unused before it is freed: a
-// stage that skips a frame finds its buffers still there.
-constexpr unsigned long kIdleTrims = 2;
+// Trims (frames) a pooled buffer may sit unused before it is freed, about
+// a second at 30 frames/s: a stage that skips frames, or a frame that needs
+// a few more buffers than the last ones did, finds them still there (with
+// 2, the allocation test saw image-sized blocks taken from the system
+// again every few frames).
+constexpr unsigned long kIdleTrims = 30;
 
 // The size a buffer of `bytes` is given: rounded up to one of eight steps
 // per power of two (at most 12.5 % more), so buffers whose size follows the
@@ -28,9 +32,8 @@ size_t size_step(size_t bytes) {
 }
 
 // A cv::MatAllocator that pools freed buffers by size step. The loop's
-// sizes repeat frame after frame, so the pool holds about one frame's
-// working set; a step never asked for again stays pooled until exit (a run
-// has few distinct steps).
+// sizes repeat frame after frame, so the pool holds about the working set
+// of the last frames; trim() frees what no frame has taken for a while.
 class FrameBufferPool final : public cv::MatAllocator {
  public:
   cv::UMatData* allocate(int dims, const int* sizes, int type, void* data0, size_t* step, cv::AccessFlag,
@@ -98,20 +101,24 @@ class FrameBufferPool final : public cv::MatAllocator {
   }
 
  public:
-  // Frees the buffers no frame has taken through the last kIdleTrims trims.
-  void trim() const {
-    std::lock_guard<std::mutex> lock(mutex_);
-    for (auto& [bytes, idle] : free_) {
-      // Taken from the back, so the longest idle are at the front.
-      size_t kept = 0;
-      while (kept < idle.size() && idle[kept].since + kIdleTrims <= generation_) {
-        std::free(idle[kept].block);
-        pooled_ -= bytes;
-        ++kept;
+  // Frees the buffers no frame has taken through the last `idle_trims`
+  // trims (0: every buffer held), outside the lock.
+  void trim(unsigned long idle_trims) const {
+    std::vector<void*> freed;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      for (auto it = free_.begin(); it != free_.end();) {
+        std::vector<Idle>& idle = it->second;
+        // Taken from the back, so the longest idle are at the front.
+        size_t n = 0;
+        while (n < idle.size() && idle[n].since + idle_trims <= generation_) freed.push_back(idle[n++].block);
+        pooled_ -= n * it->first;
+        idle.erase(idle.begin(), idle.begin() + long(n));
+        it = idle.empty() ? free_.erase(it) : std::next(it);
       }
-      idle.erase(idle.begin(), idle.begin() + long(kept));
+      ++generation_;
     }
-    ++generation_;
+    for (void* p : freed) std::free(p);
   }
 
  private:
@@ -141,6 +148,8 @@ void reuse_frame_buffers() {
 
 size_t pooled_frame_buffer_bytes() { return pool().pooled(); }
 
-void trim_frame_buffers() { pool().trim(); }
+void trim_frame_buffers() { pool().trim(kIdleTrims); }
+
+void release_frame_buffers() { pool().trim(0); }
 
 }  // namespace eyestream::pipeline

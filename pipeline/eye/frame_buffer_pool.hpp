@@ -15,10 +15,16 @@ namespace eyestream::pipeline {
 void reuse_frame_buffers();
 
 // Frees the buffers held for reuse that no frame has taken through the
-// last two calls: the eye calls it after each frame, so the pool holds about
-// a frame's working set, not every size a run has ever asked for (regions
-// that follow the gaze take many sizes over a long run).
+// last 30 calls: the eye calls it after each frame, so the pool holds about
+// the working set of the last second's frames, not every size a run has
+// ever asked for (regions that follow the gaze take many sizes over a long
+// run). Every eye's frame counts, so with several eyes (a preview's
+// viewers) the window is shorter in frames of each.
 void trim_frame_buffers();
+
+// Frees every buffer held for reuse (the bench, before it measures a
+// case's memory).
+void release_frame_buffers();
 
 // Bytes held for reuse now (for tests and the bench).
 size_t pooled_frame_buffer_bytes();

@@ -6,7 +6,7 @@
 
 namespace eyestream::pipeline {
 
-// The first executable file called `name` in the folders of PATH, or ""
+// The first executable regular file called `name` in the folders of PATH, or ""
 // when there is none (the peer is not installed).
 std::string find_on_path(const std::string& name);
 
@@ -17,7 +17,9 @@ struct ProgramRun {
 };
 
 // Runs `command` with /bin/sh (its standard input from /dev/null unless
-// the command redirects it) and waits for it.
+// the command redirects it) and waits for it, for at most 30 minutes
+// (coreutils' timeout; exit code 124 then). `output` keeps its last 64 KiB
+// at least.
 ProgramRun run_program(const std::string& command);
 
 // `text` quoted for /bin/sh.

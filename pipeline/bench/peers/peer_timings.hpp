@@ -4,7 +4,8 @@
 //   "Time-dependent visual adaptation for fast realistic image display"
 //   (SIGGRAPH 2000), global temporal adaptation only. The EXR frames become
 //   one pfs stream first (pfsinexr, untimed); the time is the operator's
-//   whole run over that stream (reading and writing pfs included), per frame.
+//   whole run over that stream (reading and writing pfs included), per
+//   frame, with the time of copying the stream (`cat`) beside it.
 // - Blender's compositor Glare node, Fog Glow (quality high, size 9, the
 //   largest; threshold 0, so every pixel's light spreads; mix 0, the input
 //   plus its glare): glare only. The time is the fastest of the compositing
@@ -19,6 +20,7 @@ namespace eyestream::pipeline {
 struct PeerTiming {
   double ms_per_frame = 0.0;
   std::string failure;  // why the peer gave no time ("" when it did)
+  double floor_ms_per_frame = -1.0;  // copying its input to its output with `cat`; -1: not measured
 };
 
 // pfsinexr and pfstmo_pattanaik00 as found on PATH; `frames` EXR frames
