@@ -5,6 +5,7 @@
 // display peak, plus the one-time kernel build with and without flare lines.
 #include <benchmark/benchmark.h>
 
+#include "glare/split_convolver.hpp"
 #include "glare/wave_lines.hpp"
 #include "pipeline/eye/frame_buffer_pool.hpp"
 #include "pipeline/eye/glare_stage.hpp"
@@ -99,6 +100,22 @@ void BM_WaveLines(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(lines.add(frame, w, 4.0, t += 1.0 / 30.0, {960, 540}, retinal, out));
 }
 
+// The split engine alone (balanced's: middle level at 1/2) on a 1080p frame
+// that is 0 but for range(0) lights: the near field scattered directly
+// while the lights are few, by a full-frame FFT beyond that.
+void BM_SplitLights(benchmark::State& state) {
+  const int lights = int(state.range(0));
+  pipeline::reuse_frame_buffers();  // as the program does
+  const glare::EyeOptics optics;
+  const glare::SplitConvolver split(1920, 1080, 32.0, 2, optics);
+  const glare::PsfWeights w = optics.weights(0.0);
+  cv::Mat frame(1080, 1920, CV_32FC3, cv::Scalar::all(0.0));
+  cv::RNG rng(3);
+  for (int i = 0; i < lights; ++i)
+    frame.at<cv::Vec3f>(rng.uniform(0, 1080), rng.uniform(0, 1920)) = cv::Vec3f::all(float(rng.uniform(1e3, 1e6)));
+  for (auto _ : state) benchmark::DoNotOptimize(split.convolve(frame, w));
+}
+
 void widths(benchmark::internal::Benchmark* b) {
   b->Arg(640)->Arg(1280)->Arg(1920)->Unit(benchmark::kMillisecond)->UseRealTime();
 }
@@ -114,6 +131,7 @@ BENCHMARK_CAPTURE(BM_GlareFrame, vos_split4, std::string("split4"), std::string(
 BENCHMARK_CAPTURE(BM_GlareFrame, balanced, std::string("preset:balanced"), std::string("vos"))->Apply(widths);
 BENCHMARK_CAPTURE(BM_GlareFrame, fast, std::string("preset:fast"), std::string("vos"))->Apply(widths);
 BENCHMARK_CAPTURE(BM_GlareFrame, gaussian, std::string("gaussian"), std::string("vos"))->Apply(widths);
+BENCHMARK(BM_SplitLights)->Arg(0)->Arg(900)->Arg(1100)->Arg(8000)->Arg(30000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_WavePattern)->Arg(0)->Arg(15)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_WaveLines)->Arg(40)->Arg(2000)->Arg(20000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_KernelBuild, vos_flare_lines, std::string("vos"), true)->Apply(build_widths);

@@ -7,7 +7,8 @@
 
 VALUES holds "key value" lines. The bench's figures come from the committed
 docs/bench.csv: bench.SCENE.SIZE.PRESET.{ms,fps,p99,speedup} (speedup: the
-reference's time over the preset's), and the bench table quoted in
+reference's time over the preset's), still.SIZE.{ms,full_ms,ratio,rest_frames,
+rest_ms,rest_ratio} (the dim still frame against a full one), and the bench table quoted in
 docs/performance.md is checked row by row against that file. The peers'
 figures come from the committed docs/bench-peers.txt (`eyestream bench
 --peers`'s table): peers.SCENE.SIZE.{pattanaik,fogglow}.{peer_ms,io_ms,eyestream_ms,ratio,energy}.
@@ -34,6 +35,19 @@ def bench_values(path="docs/bench.csv"):
         values[key + ".fps"] = float(r["fps"])
         values[key + ".p99"] = float(r["de2000_p99"])
         values[key + ".speedup"] = reference[(r["scene"], r["size"])] / float(r["filter_ms"])
+    # The skip study: the dim still frame (headlights) against a full frame
+    # of the other scene, over all its frames and over those at rest.
+    study = {(r["scene"], r["size"]): r for r in rows if r["skip"] == "on" and r["against"] == "balanced --no-skip"}
+    for (scene, size), r in study.items():
+        full = [v for (s, z), v in study.items() if z == size and s != "headlights"]
+        if scene != "headlights" or not full:
+            continue
+        full_ms, key = float(full[0]["filter_ms"]), f"still.{size}"
+        values[key + ".ms"], values[key + ".full_ms"] = float(r["filter_ms"]), full_ms
+        values[key + ".ratio"] = float(r["filter_ms"]) / full_ms
+        if r.get("rest_frames"):
+            values[key + ".rest_frames"], values[key + ".rest_ms"] = float(r["rest_frames"]), float(r["rest_ms"])
+            values[key + ".rest_ratio"] = float(r["rest_ms"]) / full_ms
     return rows, values
 
 

@@ -1,6 +1,7 @@
 // Glare convolution by FFT (FFTW, double precision), zero-padded so nothing
 // wraps around (docs/model.md). The spectra of the component kernels are
-// computed once; each frame combines them with its weights.
+// computed once (real: the PSF is point-symmetric, and a kernel that is
+// not is refused); each frame combines them with its weights.
 //
 // Double, not single precision: FFT rounding spreads over the whole frame
 // in proportion to its brightest light, and in single precision a 1e5

@@ -62,6 +62,22 @@ cv::Mat enlarge_keeping_energy(const cv::Mat& m, int by, cv::Size size) {
   return up;
 }
 
+// Sums of `m`'s by x by blocks (zero beyond its edges) into a `size` image.
+cv::Mat block_sums(const cv::Mat& m, int by, cv::Size size) {
+  cv::Mat sums(size, CV_32FC3);
+  cv::parallel_for_(cv::Range(0, size.height), [&](const cv::Range& rows) {
+    for (int v = rows.start; v < rows.end; ++v) {
+      cv::Vec3f* out = sums.ptr<cv::Vec3f>(v);
+      std::fill(out, out + size.width, cv::Vec3f());
+      for (int y = v * by; y < std::min((v + 1) * by, m.rows); ++y) {
+        const cv::Vec3f* in = m.ptr<cv::Vec3f>(y);
+        for (int x = 0; x < m.cols; ++x) out[x / by] += in[x];
+      }
+    }
+  });
+  return sums;
+}
+
 struct Source {
   int x, y;
   cv::Vec3f value;
@@ -98,6 +114,14 @@ SplitConvolver::SplitConvolver(int width, int height, double ppd, int factor, co
   coarse_[1].factor = f2;
   coarse_[1].size = {padded_w / f2, padded_h / f2};
   coarse_[1].engine = std::make_unique<FftConvolver>(tail);
+  // Enlarging the middle level to the padded frame: each frame pixel's taps,
+  // and the weight each block gets over the whole padded frame.
+  up_x_ = linear_taps(0, padded_w, 1.0 / f1, padded_w / f1);
+  up_y_ = linear_taps(0, padded_h, 1.0 / f1, padded_h / f1);
+  up_column_weight_.assign(size_t(padded_w / f1), 0.0);
+  up_row_weight_.assign(size_t(padded_h / f1), 0.0);
+  for (const LinearTap& t : up_x_) up_column_weight_[size_t(t.a)] += 1.0 - t.wb, up_column_weight_[size_t(t.b)] += t.wb;
+  for (const LinearTap& t : up_y_) up_row_weight_[size_t(t.a)] += 1.0 - t.wb, up_row_weight_[size_t(t.b)] += t.wb;
 }
 
 SplitConvolver::~SplitConvolver() = default;
@@ -153,33 +177,38 @@ void SplitConvolver::add_coarse(const cv::Mat& rgb, const PsfWeights& w, cv::Mat
   const Level& middle = coarse_[0];
   const Level& tail = coarse_[1];
   // Block sums of the input at each level (zero-padded to whole tail blocks).
-  const cv::Size padded_size(middle.size.width * middle.factor, middle.size.height * middle.factor);
-  cv::Mat padded = rgb;
-  if (padded_size != rgb.size())
-    cv::copyMakeBorder(rgb, padded, 0, padded_size.height - height_, 0, padded_size.width - width_,
-                       cv::BORDER_CONSTANT, cv::Scalar::all(0));
-  cv::Mat mid_in, tail_in;
-  cv::resize(padded, mid_in, middle.size, 0, 0, cv::INTER_AREA);
-  mid_in *= double(middle.factor) * middle.factor;
-  cv::resize(mid_in, tail_in, tail.size, 0, 0, cv::INTER_AREA);
+  const cv::Mat mid_in = block_sums(rgb, middle.factor, middle.size);
   const int step = tail.factor / middle.factor;
-  tail_in *= double(step) * step;
+  const cv::Mat tail_in = block_sums(mid_in, step, tail.size);
   // The energy landing on each block, the tail's brought to the middle's
-  // blocks, then both to the frame's pixels, each channel's total kept.
+  // blocks, then both to the frame's pixels (bilinear, as cv::resize), each
+  // channel's total kept.
   cv::Mat landed = middle.engine->convolve(mid_in, w);
   landed += enlarge_keeping_energy(tail.engine->convolve(tail_in, w), step, middle.size);
-  cv::Mat up;
-  cv::resize(landed * (1.0 / (double(middle.factor) * middle.factor)), up, padded_size, 0, 0, cv::INTER_LINEAR);
-  const cv::Scalar want = cv::sum(landed), got = cv::sum(up);
+  cv::Vec3d got;  // the enlargement's totals: each block times the weight the frame's pixels give it
+  for (int v = 0; v < landed.rows; ++v) {
+    const cv::Vec3f* m = landed.ptr<cv::Vec3f>(v);
+    cv::Vec3d row;
+    for (int u = 0; u < landed.cols; ++u) row += cv::Vec3d(m[u]) * up_column_weight_[size_t(u)];
+    got += row * up_row_weight_[size_t(v)];
+  }
+  const cv::Scalar want = cv::sum(landed);
   float scale[3];
   for (int c = 0; c < 3; ++c) scale[c] = got[c] > 0 ? float(want[c] / got[c]) : 0.0f;
   // out = max(near + coarse, 0): rounding residue never goes negative.
   cv::parallel_for_(cv::Range(0, height_), [&](const cv::Range& rows) {
     for (int y = rows.start; y < rows.end; ++y) {
       cv::Vec3f* o = out.ptr<cv::Vec3f>(y);
-      const cv::Vec3f* u = up.ptr<cv::Vec3f>(y);
-      for (int x = 0; x < width_; ++x)
-        for (int c = 0; c < 3; ++c) o[x][c] = std::max(o[x][c] + u[x][c] * scale[c], 0.0f);
+      const LinearTap& ty = up_y_[size_t(y)];
+      const cv::Vec3f* a = landed.ptr<cv::Vec3f>(ty.a);
+      const cv::Vec3f* b = landed.ptr<cv::Vec3f>(ty.b);
+      for (int x = 0; x < width_; ++x) {
+        const LinearTap& tx = up_x_[size_t(x)];
+        const cv::Vec3f top = a[tx.a] * (1.0f - tx.wb) + a[tx.b] * tx.wb;
+        const cv::Vec3f bottom = b[tx.a] * (1.0f - tx.wb) + b[tx.b] * tx.wb;
+        const cv::Vec3f u = top * (1.0f - ty.wb) + bottom * ty.wb;
+        for (int c = 0; c < 3; ++c) o[x][c] = std::max(o[x][c] + u[c] * scale[c], 0.0f);
+      }
     }
   });
 }

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "glare/fft_convolver.hpp"
+#include "glare/linear_taps.hpp"
 #include "glare/psf_kernel.hpp"
 
 namespace eyestream::glare {
@@ -60,6 +61,8 @@ class SplitConvolver {
   ComponentKernels near_;  // windowed, (2R+1) x (2R+1)
   std::unique_ptr<FftConvolver> near_fft_;  // the near part of a dense frame
   std::vector<Level> coarse_;  // middle, tail
+  std::vector<LinearTap> up_x_, up_y_;  // the middle level enlarged to the padded frame
+  std::vector<double> up_column_weight_, up_row_weight_;  // each block's share of that enlargement
 };
 
 }  // namespace eyestream::glare

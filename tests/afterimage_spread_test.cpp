@@ -104,6 +104,7 @@ TEST(AfterimageSpread, TwoSecondsAfterAFlashTheBlurIsTheModelsAtEveryRateResolut
   for (const char* preset : {"reference", "balanced", "fast"})
     for (double ppd : {20.0, 40.0, 80.0})
       for (double fps : {24.0, 60.0, 120.0}) {
+        if (test::kSanitized && (ppd != 20.0 || fps != 24.0)) continue;  // 441 s for all 27 under ASan
         const double blur = added_blur_deg(ppd, fps, preset);
         EXPECT_NEAR(blur / expected, 1.0, 0.10) << preset << ", " << ppd << " px/deg, " << fps << " fps: " << blur
                                                 << " deg";

@@ -11,14 +11,18 @@
 namespace eyestream::glare {
 namespace {
 
-// Small random component kernels, (2r + 1) square, CV_64F.
-ComponentKernels random_kernels(int r, unsigned seed) {
+// Small random component kernels, (2r + 1) square, CV_64F, point-symmetric
+// as the eye's PSF is (k(-x, -y) = k(x, y)) unless `symmetric` is false.
+ComponentKernels random_kernels(int r, unsigned seed, bool symmetric = true) {
   cv::RNG rng(seed);
   ComponentKernels k;
   cv::Mat* parts[6] = {&k.core, &k.inner, &k.outer, &k.halo[0], &k.halo[1], &k.halo[2]};
   for (cv::Mat* m : parts) {
     m->create(2 * r + 1, 2 * r + 1, CV_64F);
     rng.fill(*m, cv::RNG::UNIFORM, 0.0, 1.0);
+    cv::Mat turned;
+    cv::flip(*m, turned, -1);
+    if (symmetric) *m += turned;
     *m /= cv::sum(*m)[0];
   }
   return k;
@@ -61,6 +65,13 @@ TEST(FftConvolver, SmallKernelsMatchTheDirectSum) {
     got.convertTo(got64, CV_64FC3);
     EXPECT_LT(cv::norm(got64, want, cv::NORM_INF), 1e-4) << size;  // values near 100, stored as float
   }
+}
+
+TEST(FftConvolver, RefusesAKernelThatIsNotPointSymmetric) {
+  // Only real spectra are kept: a kernel with a complex spectrum would be
+  // convolved as its symmetric part, so it is refused instead.
+  EXPECT_THROW(FftConvolver(random_kernels(5, 7, false), 37, 23), cv::Exception);
+  EXPECT_NO_THROW(FftConvolver(random_kernels(5, 7), 37, 23));
 }
 
 TEST(FftConvolver, KeepsANightRoadBesideAHeadlight) {

@@ -11,6 +11,15 @@
 
 namespace eyestream::test {
 
+// True in the AddressSanitizer build (CI's second pass, about ten times
+// slower): the longest numerical sweeps run a corner of their matrix there
+// (every code path, fewer sizes and rates) and the whole of it in release.
+#if defined(__SANITIZE_ADDRESS__)
+inline constexpr bool kSanitized = true;
+#else
+inline constexpr bool kSanitized = false;
+#endif
+
 // A fresh empty folder under the system temp folder, removed on destruction.
 class ScratchDir {
  public:

@@ -61,12 +61,17 @@ BenchCase run_bench_case(const BenchScene& scene, const Settings& settings) {
     c.afterimage_frames += r.active.afterimages;
     c.mesopic_frames += r.active.mesopic;
     c.acuity_frames += r.active.acuity;
+    if (!r.active.glare && !r.active.retina && !r.active.afterimages) {
+      ++c.rest_frames;
+      c.rest_ms += r.times.total();
+    }
     out.linear.copyTo(c.shown[i]);
     ++c.frames;
   }
   c.memory_mib = peak_resident_mib() - resident_before;
   const double n = std::max(c.frames, 1);
   c.filter_ms /= n;
+  c.rest_ms /= std::max(c.rest_frames, 1);
   c.encode_ms /= n;
   c.wall_ms /= n;
   c.stage_ms *= 1.0 / n;

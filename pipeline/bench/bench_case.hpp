@@ -21,6 +21,10 @@ struct BenchCase {
   int frames = 0;
   // Frames on which each stage worked.
   int glare_frames = 0, retina_frames = 0, afterimage_frames = 0, mesopic_frames = 0, acuity_frames = 0;
+  // Frames at rest (no glare, retina or afterimage work: a still frame once
+  // its state has settled) and their mean filter time.
+  int rest_frames = 0;
+  double rest_ms = 0.0;
   std::vector<cv::Mat> shown;  // display-linear output of every frame
   cv::Mat bleached, deficit;   // the retina state after the last frame
   double sites_per_pixel = 1.0, calcium_max = 1.0;

@@ -144,7 +144,7 @@ void write_bench_csv(const std::vector<BenchRow>& rows, const std::string& path)
   std::string text =
       "scene,size,preset,skip,frames,filter_ms,fps,glare_ms,adaptation_ms,retina_ms,mesopic_ms,afterimage_ms,"
       "encode_ms,setup_s,memory_mib,glare_frames,retina_frames,afterimage_frames,mesopic_frames,acuity_frames,"
-      "de2000_p99,de2000_max,state_error,against\n";
+      "de2000_p99,de2000_max,state_error,against,rest_frames,rest_ms\n";
   for (const BenchRow& r : rows) {
     const BenchCase& f = r.figures;
     const bool err = !r.against.empty();
@@ -158,6 +158,7 @@ void write_bench_csv(const std::vector<BenchRow>& rows, const std::string& path)
       << f.acuity_frames << ',';
     if (err) o << r.error.de_p99 << ',' << r.error.de_max << ',' << r.error.state << ',' << r.against;
     else o << ",,,";
+    o << ',' << f.rest_frames << ',' << f.rest_ms;
     text += o.str() + "\n";
   }
   io::StagedFile file(path);

@@ -86,14 +86,16 @@ void peers_on(const std::string& scene_name, const std::string& size, const Benc
     if (t.failure.empty()) fog.energy_error = energy_error(scene.frames[middle], scene.info, q.flare_model);
   }
   rows.push_back(fog);
-  if (!q.quiet)
-    for (size_t i = rows.size() - 2; i < rows.size(); ++i)
+  if (!q.quiet) {
+    for (size_t i = rows.size() - 2; i < rows.size(); ++i) {
       if (rows[i].skipped.empty())
         std::fprintf(stderr, "bench: %s %s %s: %.1f ms/frame\n", scene_name.c_str(), size.c_str(),
                      rows[i].peer.c_str(), rows[i].peer_ms);
       else
         std::fprintf(stderr, "bench: %s %s %s: %s\n", scene_name.c_str(), size.c_str(), rows[i].peer.c_str(),
                      rows[i].skipped.c_str());
+    }
+  }
 }
 
 }  // namespace
