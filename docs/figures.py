@@ -7,8 +7,9 @@
 
 VALUES holds "key value" lines. The bench's figures come from the committed
 docs/bench.csv: bench.SCENE.SIZE.PRESET.{ms,fps,p99,speedup} (speedup: the
-reference's time over the preset's), still.SIZE.{ms,full_ms,ratio,rest_frames,
-rest_ms,rest_ratio} (the dim still frame against a full one), and the bench table quoted in
+reference's time over the preset's), still.SIZE.{ms,full_ms,ratio,self_ms,rest_frames,
+rest_ms,rest_ratio,rest_self_ratio} (the dim still frame against a full
+night-drive frame and against itself with every stage on every frame), and the bench table quoted in
 docs/performance.md is checked row by row against that file. The peers'
 figures come from the committed docs/bench-peers.txt (`eyestream bench
 --peers`'s table): peers.SCENE.SIZE.{pattanaik,fogglow}.{peer_ms,io_ms,eyestream_ms,ratio,energy}.
@@ -45,9 +46,14 @@ def bench_values(path="docs/bench.csv"):
         full_ms, key = float(full[0]["filter_ms"]), f"still.{size}"
         values[key + ".ms"], values[key + ".full_ms"] = float(r["filter_ms"]), full_ms
         values[key + ".ratio"] = float(r["filter_ms"]) / full_ms
-        if r.get("rest_frames"):
+        own = [v for v in rows if v["scene"] == scene and v["size"] == size and v["skip"] == "off"]
+        if own:  # the same still scene with every stage on every frame
+            values[key + ".self_ms"] = float(own[0]["filter_ms"])
+        if int(r.get("rest_frames") or 0) > 0:
             values[key + ".rest_frames"], values[key + ".rest_ms"] = float(r["rest_frames"]), float(r["rest_ms"])
             values[key + ".rest_ratio"] = float(r["rest_ms"]) / full_ms
+            if own:
+                values[key + ".rest_self_ratio"] = float(r["rest_ms"]) / values[key + ".self_ms"]
     return rows, values
 
 

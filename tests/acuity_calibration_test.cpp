@@ -64,7 +64,8 @@ TEST(AcuityCalibration, TheResolutionLimitFollowsHumanAcuityFromStarlightToTwili
   for (const auto& [ppd, levels] : cases) {
     const AcuityLoss loss(AcuityParams{}, ppd, 3);
     for (double log_l : levels) {
-      if (test::kSanitized && log_l != levels.front()) continue;  // 294 s for all 13 under ASan
+      // 294 s for all 13 under ASan: there the darkest and brightest only.
+      if (test::kSanitized && log_l != levels.front() && log_l != levels.back()) continue;
       const double human = acuity_limit_cpd(log_l);
       EXPECT_GE(transfer(loss, ppd, human / 1.5, log_l), 0.1) << ppd << " px/deg, 10^" << log_l << " cd/m^2";
       if (human * 1.5 < ppd / 2.5)

@@ -15,6 +15,13 @@ namespace eyestream::test {
 // slower): the longest numerical sweeps run a corner of their matrix there
 // (every code path, fewer sizes and rates) and the whole of it in release.
 #if defined(__SANITIZE_ADDRESS__)
+#define EYESTREAM_TEST_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define EYESTREAM_TEST_SANITIZED 1
+#endif
+#endif
+#ifdef EYESTREAM_TEST_SANITIZED
 inline constexpr bool kSanitized = true;
 #else
 inline constexpr bool kSanitized = false;
