@@ -21,11 +21,14 @@ ExrSequenceSource::ExrSequenceSource(const std::string& input, const ExrSequence
   info_.description = "EXR sequence, " + std::to_string(entries_.size()) + " frames, " + probe.channels +
                       (probe.layer.empty() ? "" : " of layer " + probe.layer);
   channels_ = probe.channels;
-  first_ = decode(entries_.front(), 0);
+  first_ = frame_from(std::move(probe), entries_.front(), 0);  // the probe is the first frame: read once
 }
 
 SceneFrame ExrSequenceSource::decode(const SequenceEntry& entry, std::int64_t index) const {
-  ExrImage image = read_exr(entry.path, options_.max_pixels, options_.layer);
+  return frame_from(read_exr(entry.path, options_.max_pixels, options_.layer), entry, index);
+}
+
+SceneFrame ExrSequenceSource::frame_from(ExrImage image, const SequenceEntry& entry, std::int64_t index) const {
   if (index > 0 && (image.rgb.cols != info_.width || image.rgb.rows != info_.height))
     throw InputError(entry.path + ": frame " + std::to_string(index) + " is " + std::to_string(image.rgb.cols) + "x" +
                      std::to_string(image.rgb.rows) + ", the sequence began at " + std::to_string(info_.width) + "x" +

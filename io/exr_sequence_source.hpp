@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "io/exr_file.hpp"
 #include "io/memory_guard.hpp"
 #include "io/frame_sequence.hpp"
 #include "io/frame_source.hpp"
@@ -35,6 +36,8 @@ class ExrSequenceSource : public FrameSource {
 
  private:
   SceneFrame decode(const SequenceEntry& entry, std::int64_t index) const;
+  // The frame from an image already read from the entry's file.
+  SceneFrame frame_from(ExrImage image, const SequenceEntry& entry, std::int64_t index) const;
 
   ExrSequenceOptions options_;
   std::vector<SequenceEntry> entries_;

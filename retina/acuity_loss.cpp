@@ -127,14 +127,22 @@ void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
   });
   const int deepest = *std::max_element(row_deepest.begin(), row_deepest.end());
   if (deepest == 0) return;
-  std::vector<cv::Mat> levels(size_t(deepest) + 1);
+  // The levels are made one from the last. A full-resolution level is
+  // written to its pixels as soon as the next level is made (the image,
+  // level 0, is the first level's source only), so two full-frame levels
+  // are held at a time, not every one (100 MB at 1080p in `balanced`);
+  // the reduced levels, a quarter of the frame or less, are kept and read
+  // bilinearly in one last pass. A level that is a copy of the last shares
+  // its buffer; writing a level into the image where it is the image
+  // itself leaves the pixels as they were.
+  std::vector<cv::Mat> kept(size_t(deepest) + 1);
   std::vector<int> factor(size_t(deepest) + 1, 1);
-  levels[0] = image;
-  double variance = 0.0;  // of the stored levels[i], full-resolution px^2
+  cv::Mat last = image;
+  int f = 1;
+  double variance = 0.0;  // of the stored level, full-resolution px^2
   for (int i = 1; i <= deepest; ++i) {
     const double sigma = sigmas_px_[size_t(i - 1)];
-    int f = factor[size_t(i - 1)];
-    cv::Mat from = levels[size_t(i - 1)];
+    cv::Mat from = last;
     if (params_.pyramid_from_px > 0 && sigma / (2 * f) >= params_.pyramid_from_px / 2 && from.cols >= 16 &&
         from.rows >= 16) {
       cv::Mat reduced;
@@ -148,28 +156,36 @@ void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
     const double extra = std::sqrt(std::max(target - variance, 0.0)) / f;  // at the level's own resolution
     // A blur under 0.19 px gives its neighbours a weight under 1e-6
     // (exp(-1 / (2 0.19^2))): a copy, its variance left to the next level.
+    cv::Mat made;
     if (extra < 0.19) {
-      levels[size_t(i)] = from;  // read only: the image is written after every level is made
+      made = from;
     } else {
-      gaussian_blur(from, levels[size_t(i)], extra);
+      gaussian_blur(from, made, extra);
       variance = std::max(variance, target);
     }
+    if (i > 1 && factor[size_t(i - 1)] == 1)
+      write_full_level(image, first, row_deepest, i - 1, last);
+    else if (i > 1)
+      kept[size_t(i - 1)] = last;
+    last = made;
   }
-  // Each reduced level's bilinear read, per column and per row.
+  kept[size_t(deepest)] = last;
+  // The kept levels' pixels; a full-resolution one (the deepest only) is
+  // copied, a reduced one read bilinearly, per column and per row.
   std::vector<std::unique_ptr<BilinearAxis>> across(size_t(deepest) + 1), down(size_t(deepest) + 1);
   for (int i = 1; i <= deepest; ++i)
-    if (factor[size_t(i)] > 1) {
-      across[size_t(i)] = std::make_unique<BilinearAxis>(image.cols, levels[size_t(i)].cols, 1.0f / float(factor[size_t(i)]));
-      down[size_t(i)] = std::make_unique<BilinearAxis>(image.rows, levels[size_t(i)].rows, 1.0f / float(factor[size_t(i)]));
+    if (!kept[size_t(i)].empty() && factor[size_t(i)] > 1) {
+      across[size_t(i)] = std::make_unique<BilinearAxis>(image.cols, kept[size_t(i)].cols, 1.0f / float(factor[size_t(i)]));
+      down[size_t(i)] = std::make_unique<BilinearAxis>(image.rows, kept[size_t(i)].rows, 1.0f / float(factor[size_t(i)]));
     }
   cv::parallel_for_(cv::Range(0, image.rows), [&](const cv::Range& rows) {
     for (int y = rows.start; y < rows.end; ++y) {
       const std::uint8_t* k_row = first.ptr<std::uint8_t>(y);
       cv::Vec3f* out = image.ptr<cv::Vec3f>(y);
       for (int x = 0; x < image.cols; ++x) {
-        const int k = std::min<int>(k_row[x], deepest);
-        if (k == 0) continue;
-        const cv::Mat& m = levels[size_t(k)];
+        const int k = k_row[x];
+        if (k == 0 || kept[size_t(k)].empty()) continue;  // level 0, or written already
+        const cv::Mat& m = kept[size_t(k)];
         if (factor[size_t(k)] == 1) {
           out[x] = m.ptr<cv::Vec3f>(y)[x];
           continue;
@@ -183,6 +199,20 @@ void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
         const int x0 = ax.lo[ix], x1 = ax.hi[ix];
         out[x] = (r0[x0] * (1.0f - fx) + r0[x1] * fx) * (1.0f - fy) + (r1[x0] * (1.0f - fx) + r1[x1] * fx) * fy;
       }
+    }
+  });
+}
+
+void AcuityLoss::write_full_level(cv::Mat& image, const cv::Mat& first, const std::vector<std::uint8_t>& row_deepest,
+                                  int k, const cv::Mat& level) {
+  cv::parallel_for_(cv::Range(0, image.rows), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) {
+      if (row_deepest[size_t(y)] < k) continue;
+      const std::uint8_t* k_row = first.ptr<std::uint8_t>(y);
+      const cv::Vec3f* in = level.ptr<cv::Vec3f>(y);
+      cv::Vec3f* out = image.ptr<cv::Vec3f>(y);
+      for (int x = 0; x < image.cols; ++x)
+        if (k_row[x] == k) out[x] = in[x];
     }
   });
 }

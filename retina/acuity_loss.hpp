@@ -91,6 +91,11 @@ class AcuityLoss {
   void apply(cv::Mat& image, const cv::Mat& level) const;
 
  private:
+  // Writes full-resolution blur level k to the pixels of `image` whose
+  // first kept band is k.
+  static void write_full_level(cv::Mat& image, const cv::Mat& first, const std::vector<std::uint8_t>& row_deepest,
+                               int k, const cv::Mat& level);
+
   AcuityParams params_;
   std::vector<double> sigmas_px_, tau_;
   SmoothNoiseParams noise_;

@@ -68,8 +68,9 @@ TEST(AcuityCalibration, TheResolutionLimitFollowsHumanAcuityFromStarlightToTwili
       if (test::kSanitized && log_l != levels.front() && log_l != levels.back()) continue;
       const double human = acuity_limit_cpd(log_l);
       EXPECT_GE(transfer(loss, ppd, human / 1.5, log_l), 0.1) << ppd << " px/deg, 10^" << log_l << " cd/m^2";
-      if (human * 1.5 < ppd / 2.5)
+      if (human * 1.5 < ppd / 2.5) {
         EXPECT_LT(transfer(loss, ppd, human * 1.5, log_l), 0.1) << ppd << " px/deg, 10^" << log_l << " cd/m^2";
+      }
     }
   }
 }

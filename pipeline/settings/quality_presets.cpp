@@ -24,7 +24,7 @@ void apply_quality_preset(const std::string& name, Settings& s) {
     s.glare_tail_factor = 2;
     s.glare_resolution = 1.0;
     s.acuity.pyramid_from_px = 6.0;
-    s.sink.video.preset = "faster";
+    s.sink.video.preset = "veryfast";  // docs/performance.md: 63 MB less memory and 22 ms less CPU a 1080p frame than faster
   } else if (name == "fast") {
     s.precision = "float";
     s.state_sites_per_pixel = 0.25;

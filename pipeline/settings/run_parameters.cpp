@@ -227,7 +227,7 @@ ParamSet run_parameters(Settings& s) {
   set.add(number("keyint", "frames", "longest distance between video keyframes (seeking, cutting)", out,
                  &s.sink.video.keyint, 1, 10000));
   set.add(number("crf", "", "video constant rate factor (lower is better)", out, &s.sink.video.crf, 0, 51));
-  set.add(choice("x264-preset", "video encoder speed preset (x264 and x265 names; --quality sets medium, faster or ultrafast)", out, &s.sink.video.preset,
+  set.add(choice("x264-preset", "video encoder speed preset (x264 and x265 names; --quality sets medium, veryfast or ultrafast)", out, &s.sink.video.preset,
                  {"ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow"}));
   set.add(number("encoder-threads", "", "H.264 encoder threads (fixed: output bytes depend on it)", out,
                  &s.sink.video.encoder_threads, 1, 64));
