@@ -102,6 +102,14 @@ void apply_flare_lines(const FlareLineSet& lines, double ppd, const std::vector<
   const int sub = std::max(1, int(std::lround(frame_ppd / ppd)));  // frame pixels across a kernel pixel
   const cv::Size size = kernels.front()->size();
   const int cx = size.width / 2, cy = size.height / 2;
+  // No line reaches past the longest: a pixel whose every sample lies
+  // beyond it (one whole pixel of margin, far above rounding) sums zeros,
+  // so its samples are not evaluated. A reduced kernel (the split engine's
+  // tail, sub^2 samples a pixel) spans the whole frame and the lines only
+  // its middle: most of its set-up time went there.
+  double longest_deg = 0.0;
+  for (const FlareLine& line : set.lines) longest_deg = std::max(longest_deg, line.length_deg);
+  const double reach_px = longest_deg * ppd + 1.0;
   cv::Mat pattern(size, CV_64F);
   cv::Mat ring(size, CV_32S);
   cv::parallel_for_(cv::Range(0, size.height), [&](const cv::Range& rows) {
@@ -109,9 +117,11 @@ void apply_flare_lines(const FlareLineSet& lines, double ppd, const std::vector<
       for (int x = 0; x < size.width; ++x) {
         const double dx = x - cx, dy = y - cy;
         double raw = 0.0;
-        for (int sy = 0; sy < sub; ++sy)
-          for (int sx = 0; sx < sub; ++sx)
-            raw += flare_pattern(set, dx + (sx + 0.5) / sub - 0.5, dy + (sy + 0.5) / sub - 0.5, ppd);
+        const double near_x = std::max(std::abs(dx) - 0.5, 0.0), near_y = std::max(std::abs(dy) - 0.5, 0.0);
+        if (near_x * near_x + near_y * near_y < reach_px * reach_px)
+          for (int sy = 0; sy < sub; ++sy)
+            for (int sx = 0; sx < sub; ++sx)
+              raw += flare_pattern(set, dx + (sx + 0.5) / sub - 0.5, dy + (sy + 0.5) / sub - 0.5, ppd);
         // Within 3 frame pixels of the centre every line overlaps: no pattern.
         const bool centre = std::hypot(dx, dy) * sub < 3.0;
         pattern.at<double>(y, x) = centre ? 1.0 : (1.0 - set.contrast) + set.contrast * raw / (sub * sub);

@@ -188,37 +188,47 @@ FrameProjection::FrameProjection(int width, int height, double fov_deg, Projecti
   });
   cv::Mat shifted = positions_ - cv::Scalar(0.5, 0.5);
   cv::convertMaps(shifted, cv::Mat(), remap1_, remap2_, CV_16SC2);
+  // Every pixel of these maps is independent of the others: computed by
+  // rows in parallel, the same values whatever the split.
   flux_ratio_.create(plane_, CV_32F);
-  for (int v = 0; v < plane_.height; ++v)
-    for (int u = 0; u < plane_.width; ++u) {
-      const double theta = kind_ == Projection::equidistant
-                               ? 0.0  // angle-uniform: one solid angle per pixel, as the identity takes it
-                               : std::hypot(u + 0.5 - 0.5 * plane_.width, v + 0.5 - 0.5 * plane_.height) / fp_;
-      flux_ratio_.at<float>(v, u) = float(theta > 0.0 ? std::sin(theta) / theta : 1.0);
-    }
+  cv::parallel_for_(cv::Range(0, plane_.height), [&](const cv::Range& r) {
+    for (int v = r.start; v < r.end; ++v)
+      for (int u = 0; u < plane_.width; ++u) {
+        const double theta = kind_ == Projection::equidistant
+                                 ? 0.0  // angle-uniform: one solid angle per pixel, as the identity takes it
+                                 : std::hypot(u + 0.5 - 0.5 * plane_.width, v + 0.5 - 0.5 * plane_.height) / fp_;
+        flux_ratio_.at<float>(v, u) = float(theta > 0.0 ? std::sin(theta) / theta : 1.0);
+      }
+  });
   // The fixed splat's row reach and normalisation (the sum of b over the
   // frame pixels landing on each plane pixel: the same every frame).
   flux_top_.resize(size_t(height));
   flux_bottom_.resize(size_t(height));
-  for (int y = 0; y < height; ++y) {
-    float low = 1e30f, high = -1e30f;
-    for (int x = 0; x < width; ++x) {
-      low = std::min(low, positions_.at<cv::Vec2f>(y, x)[1]);
-      high = std::max(high, positions_.at<cv::Vec2f>(y, x)[1]);
+  cv::parallel_for_(cv::Range(0, height), [&](const cv::Range& r) {
+    for (int y = r.start; y < r.end; ++y) {
+      float low = 1e30f, high = -1e30f;
+      const cv::Vec2f* p = positions_.ptr<cv::Vec2f>(y);
+      for (int x = 0; x < width; ++x) {
+        low = std::min(low, p[x][1]);
+        high = std::max(high, p[x][1]);
+      }
+      flux_top_[size_t(y)] = int(std::floor(low - 0.5f));
+      flux_bottom_[size_t(y)] = int(std::floor(high - 0.5f)) + 1;
     }
-    flux_top_[size_t(y)] = int(std::floor(low - 0.5f));
-    flux_bottom_[size_t(y)] = int(std::floor(high - 0.5f)) + 1;
-  }
+  });
   const cv::Mat weight = splat_any(cv::Mat(frame_, CV_32FC1, cv::Scalar(1.0)), positions_, Affine{1, 1, -0.5}, plane_,
                                    cv::Scalar(0.0), cv::Mat());  // 1 where covered, 0 beyond
   cv::Mat ones(frame_, CV_32FC3, cv::Scalar::all(1.0)), sums(plane_, CV_32FC3);
   splat_fixed(ones, positions_, flux_top_, flux_bottom_, cv::Mat(plane_, CV_32F, cv::Scalar(1.0)), sums);
   flux_norm_.create(plane_, CV_32F);
-  for (int v = 0; v < plane_.height; ++v)
-    for (int u = 0; u < plane_.width; ++u) {
-      const float b = sums.at<cv::Vec3f>(v, u)[0];
-      flux_norm_.at<float>(v, u) = weight.at<float>(v, u) > 0.0f && b > 0.0f ? flux_ratio_.at<float>(v, u) / b : 0.0f;
-    }
+  cv::parallel_for_(cv::Range(0, plane_.height), [&](const cv::Range& r) {
+    for (int v = r.start; v < r.end; ++v)
+      for (int u = 0; u < plane_.width; ++u) {
+        const float b = sums.at<cv::Vec3f>(v, u)[0];
+        flux_norm_.at<float>(v, u) =
+            weight.at<float>(v, u) > 0.0f && b > 0.0f ? flux_ratio_.at<float>(v, u) / b : 0.0f;
+      }
+  });
 }
 
 cv::Size2d FrameProjection::retina_reach() const {
