@@ -90,7 +90,12 @@ namespace {
 // A 2-D transform done as row transforms (r2c, only the frame's rows) and
 // column transforms (c2c, in blocks of kColumnBlock), each block of work
 // handed to whichever thread is free: every row and column is computed by
-// the same plan whatever thread runs it.
+// the same plan whatever thread runs it. The spectrum is held block-major:
+// a block's ny x kColumnBlock values are contiguous, so its column
+// transforms read neighbouring memory (in rows of the whole spectrum, the
+// same column's values would be a row's length apart: FFTW then copies
+// each column through a buffer, and the large power-of-two strides thrash
+// the cache).
 class RowColumnEngine final : public FftConvolver::Engine {
   using F = Fftw;
   using T = double;
@@ -117,13 +122,15 @@ class RowColumnEngine final : public FftConvolver::Engine {
     std::lock_guard<std::mutex> lock(fftw_planner_mutex());
     data_ = F::complex(size_t(ny) * stride_);
     T* row = F::real(size_t(nx));
-    forward_row_ = F::r2c(nx, row, data_);
-    backward_row_ = F::c2r(nx, data_, row);
+    F::Complex* spectrum_row = F::complex(size_t(nc_));
+    forward_row_ = F::r2c(nx, row, spectrum_row);
+    backward_row_ = F::c2r(nx, spectrum_row, row);
     F::free(row);
+    F::free(spectrum_row);
     const int last = nc_ % kColumnBlock;
     for (int sign : {FFTW_FORWARD, FFTW_BACKWARD}) {
-      column_[sign == FFTW_FORWARD ? 0 : 1][0] = F::columns(ny, kColumnBlock, stride_, data_, sign);
-      column_[sign == FFTW_FORWARD ? 0 : 1][1] = last ? F::columns(ny, last, stride_, data_, sign) : nullptr;
+      column_[sign == FFTW_FORWARD ? 0 : 1][0] = F::columns(ny, kColumnBlock, kColumnBlock, data_, sign);
+      column_[sign == FFTW_FORWARD ? 0 : 1][1] = last ? F::columns(ny, last, kColumnBlock, data_, sign) : nullptr;
     }
   }
 
@@ -149,18 +156,22 @@ class RowColumnEngine final : public FftConvolver::Engine {
     // Rows: r2c of the frame's rows; the padding rows are 0.
     cv::parallel_for_(cv::Range(0, ny), [&](const cv::Range& r) {
       T* row = F::real(size_t(nx));
+      F::Complex* spectrum = F::complex(size_t(stride_));
       for (int y = r.start; y < r.end; ++y) {
-        F::Complex* dst = data_ + size_t(y) * stride_;
         if (y >= height_) {
-          std::memset(static_cast<void*>(dst), 0, sizeof(F::Complex) * size_t(stride_));
-          continue;
+          std::memset(static_cast<void*>(spectrum), 0, sizeof(F::Complex) * size_t(stride_));
+        } else {
+          const cv::Vec3f* in = rgb.ptr<cv::Vec3f>(y);
+          for (int x = 0; x < width_; ++x) row[x] = T(in[x][c]);
+          std::fill(row + width_, row + nx, T(0));
+          F::r2c(forward_row_, row, spectrum);
+          std::memset(static_cast<void*>(spectrum + nc_), 0, sizeof(F::Complex) * size_t(stride_ - nc_));
         }
-        const cv::Vec3f* in = rgb.ptr<cv::Vec3f>(y);
-        for (int x = 0; x < width_; ++x) row[x] = T(in[x][c]);
-        std::fill(row + width_, row + nx, T(0));
-        F::r2c(forward_row_, row, dst);
+        for (int b = 0; b < stride_ / kColumnBlock; ++b)
+          std::memcpy(static_cast<void*>(at(b, y)), spectrum + b * kColumnBlock, sizeof(F::Complex) * kColumnBlock);
       }
       F::free(row);
+      F::free(spectrum);
     });
     // Columns: forward, times the channel's kernel, back; block by block.
     const int blocks = (nc_ + kColumnBlock - 1) / kColumnBlock;
@@ -169,7 +180,7 @@ class RowColumnEngine final : public FftConvolver::Engine {
       for (int b = r.start; b < r.end; ++b) {
         const int x0 = b * kColumnBlock;
         const int n = std::min(kColumnBlock, nc_ - x0), partial = n < kColumnBlock;
-        F::Complex* block = data_ + x0;
+        F::Complex* block = at(b, 0);
         F::c2c(column_[0][partial], block);
         const size_t start = size_t(b) * ny * kColumnBlock;
         const T* k0 = spectra_[0].data() + start;
@@ -177,7 +188,7 @@ class RowColumnEngine final : public FftConvolver::Engine {
         const T* k2 = spectra_[2].data() + start;
         const T* k3 = spectra_[3 + c].data() + start;
         for (int y = 0; y < ny; ++y) {
-          T* v = reinterpret_cast<T*>(block + size_t(y) * stride_);
+          T* v = reinterpret_cast<T*>(block + size_t(y) * kColumnBlock);
           const size_t o = size_t(y) * kColumnBlock;
           for (int j = 0; j < n; ++j) {
             const T kr = weight[0] * k0[o + j] + weight[1] * k1[o + j] + weight[2] * k2[o + j] + weight[3] * k3[o + j];
@@ -192,14 +203,21 @@ class RowColumnEngine final : public FftConvolver::Engine {
     const T scale = T(1.0 / (double(nx) * ny));
     cv::parallel_for_(cv::Range(0, height_), [&](const cv::Range& r) {
       T* row = F::real(size_t(nx));
+      F::Complex* spectrum = F::complex(size_t(stride_));
       for (int y = r.start; y < r.end; ++y) {
-        F::c2r(backward_row_, data_ + size_t(y) * stride_, row);
+        for (int b = 0; b < stride_ / kColumnBlock; ++b)
+          std::memcpy(static_cast<void*>(spectrum + b * kColumnBlock), at(b, y), sizeof(F::Complex) * kColumnBlock);
+        F::c2r(backward_row_, spectrum, row);
         cv::Vec3f* o = out.ptr<cv::Vec3f>(y);
         for (int x = 0; x < width_; ++x) o[x][c] = float(std::max(row[x] * scale, T(0)));
       }
       F::free(row);
+      F::free(spectrum);
     });
   }
+
+  // Row y's kColumnBlock values of block b.
+  F::Complex* at(int b, int y) const { return data_ + (size_t(b) * size_t(ny) + size_t(y)) * kColumnBlock; }
 
   int width_, height_, nc_ = 0, stride_ = 0;
   std::vector<T> spectra_[6];  // core, inner, outer, halo R, G, B; real, block-major

@@ -6,6 +6,7 @@
 
 #include <Imath/half.h>
 #include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfCompression.h>
 #include <OpenEXR/openexr.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
@@ -110,9 +111,24 @@ void check_data_window(const std::string& path, std::int64_t max_pixels) {
                      " pixels (--max-pixels)");
 }
 
+// Scan lines compressed together (the OpenEXR file layout's table).
+int lines_per_block(Imf::Compression c) {
+  switch (c) {
+    case Imf::ZIP_COMPRESSION:
+    case Imf::PXR24_COMPRESSION: return 16;
+    case Imf::PIZ_COMPRESSION:
+    case Imf::B44_COMPRESSION:
+    case Imf::B44A_COMPRESSION:
+    case Imf::DWAA_COMPRESSION: return 32;
+    case Imf::DWAB_COMPRESSION: return 256;
+    default: return 1;
+  }
+}
+
 }  // namespace
 
-ExrImage read_exr(const std::string& path, std::int64_t max_pixels, const std::string& layer) {
+ExrImage read_exr(const std::string& path, std::int64_t max_pixels, const std::string& layer,
+                  const ExrRowsHook& on_rows) {
   try {
     check_data_window(path, max_pixels);
     Imf::InputFile file(path.c_str());
@@ -161,9 +177,16 @@ ExrImage read_exr(const std::string& path, std::int64_t max_pixels, const std::s
       fb.insert(prefix + "B", Imf::Slice::Make(Imf::FLOAT, base + 2 * sizeof(float), dw, xs, ys));
     }
     file.setFrameBuffer(fb);
-    file.readPixels(dw.min.y, dw.max.y);
-    if (image.channels == "Y") {
-      image.rgb.forEach<cv::Vec3f>([](cv::Vec3f& p, const int*) { p[1] = p[2] = p[0]; });
+    // Bands of whole line buffers (16 lines for ZIP, 32 for PIZ ...), each
+    // finished while it is in cache.
+    const int band = std::max(16, lines_per_block(header.compression()));
+    for (int y0 = dw.min.y; y0 <= dw.max.y; y0 += band) {
+      const int y1 = int(std::min<std::int64_t>(std::int64_t(y0) + band - 1, dw.max.y));
+      file.readPixels(y0, y1);
+      cv::Mat rows = image.rgb.rowRange(y0 - dw.min.y, y1 - dw.min.y + 1);
+      if (image.channels == "Y")
+        rows.forEach<cv::Vec3f>([](cv::Vec3f& p, const int*) { p[1] = p[2] = p[0]; });
+      if (on_rows) on_rows(image, rows);
     }
     return image;
   } catch (const InputError&) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <opencv2/core.hpp>
 #include <optional>
 #include <string>
@@ -30,7 +31,12 @@ struct ExrImage {
 // names the one to read; without it, the root R,G,B, else the beauty pass
 // (a layer ending in Combined, beauty or RGBA), else the only colour layer;
 // anything else is refused listing the layers.
-ExrImage read_exr(const std::string& path, std::int64_t max_pixels, const std::string& layer = "");
+// `on_rows`, when given, is called with each band of rows as soon as it is
+// decoded (a view into image.rgb; the other fields are set by then), in
+// order from the top: work on the pixels while they are in cache.
+using ExrRowsHook = std::function<void(const ExrImage& image, cv::Mat rows)>;
+ExrImage read_exr(const std::string& path, std::int64_t max_pixels, const std::string& layer = "",
+                  const ExrRowsHook& on_rows = {});
 
 struct ExrWriteOptions {
   bool half = true;

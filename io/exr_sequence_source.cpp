@@ -2,6 +2,7 @@
 
 #include "io/error.hpp"
 #include "io/exr_file.hpp"
+#include "io/nonfinite_pixels.hpp"
 #include "io/primaries.hpp"
 #include "io/staged_file.hpp"
 
@@ -10,7 +11,8 @@ namespace eyestream::io {
 ExrSequenceSource::ExrSequenceSource(const std::string& input, const ExrSequenceOptions& options)
     : options_(options), entries_(list_sequence(input, {".exr"}, options.skip_missing)) {
   for (const SequenceEntry& e : entries_) protect_input(e.path);
-  ExrImage probe = read_exr(entries_.front().path, options_.max_pixels, options_.layer);
+  std::int64_t nonfinite = 0;
+  ExrImage probe = read(entries_.front(), &nonfinite);
   double fps =
       options_.frames_per_second.value_or(probe.frames_per_second.value_or(options_.default_frames_per_second));
   if (!(fps > 0)) throw UsageError("--fps: frame rate must be positive");
@@ -21,14 +23,30 @@ ExrSequenceSource::ExrSequenceSource(const std::string& input, const ExrSequence
   info_.description = "EXR sequence, " + std::to_string(entries_.size()) + " frames, " + probe.channels +
                       (probe.layer.empty() ? "" : " of layer " + probe.layer);
   channels_ = probe.channels;
-  first_ = frame_from(std::move(probe), entries_.front(), 0);  // the probe is the first frame: read once
+  first_ = frame_from(std::move(probe), nonfinite, entries_.front(), 0);  // the probe is the first frame: read once
 }
 
 SceneFrame ExrSequenceSource::decode(const SequenceEntry& entry, std::int64_t index) const {
-  return frame_from(read_exr(entry.path, options_.max_pixels, options_.layer), entry, index);
+  std::int64_t nonfinite = 0;
+  ExrImage image = read(entry, &nonfinite);
+  return frame_from(std::move(image), nonfinite, entry, index);
 }
 
-SceneFrame ExrSequenceSource::frame_from(ExrImage image, const SequenceEntry& entry, std::int64_t index) const {
+ExrImage ExrSequenceSource::read(const SequenceEntry& entry, std::int64_t* nonfinite) const {
+  *nonfinite = 0;
+  return read_exr(entry.path, options_.max_pixels, options_.layer, [&](const ExrImage& image, cv::Mat rows) {
+    if (image.chromaticities) {
+      const cv::Matx33d m = to_rec709_matrix(*image.chromaticities);
+      if (!is_identity(m)) apply_matrix(rows, m);
+    }
+    const double scale = options_.scale.value_or(image.white_luminance.value_or(1.0));
+    if (scale != 1.0) rows *= scale;
+    *nonfinite += nonfinite_pixels(rows);
+  });
+}
+
+SceneFrame ExrSequenceSource::frame_from(ExrImage image, std::int64_t nonfinite, const SequenceEntry& entry,
+                                         std::int64_t index) const {
   if (index > 0 && (image.rgb.cols != info_.width || image.rgb.rows != info_.height))
     throw InputError(entry.path + ": frame " + std::to_string(index) + " is " + std::to_string(image.rgb.cols) + "x" +
                      std::to_string(image.rgb.rows) + ", the sequence began at " + std::to_string(info_.width) + "x" +
@@ -36,14 +54,10 @@ SceneFrame ExrSequenceSource::frame_from(ExrImage image, const SequenceEntry& en
   if (index > 0 && image.channels != channels_)
     throw InputError(entry.path + ": frame " + std::to_string(index) + " has channels " + image.channels +
                      ", the sequence began with " + channels_);
-  if (image.chromaticities) {
-    cv::Matx33d m = to_rec709_matrix(*image.chromaticities);
-    if (!is_identity(m)) apply_matrix(image.rgb, m);
-  }
-  double scale = options_.scale.value_or(image.white_luminance.value_or(1.0));
-  if (scale != 1.0) image.rgb *= scale;
   SceneFrame frame;
   frame.rgb = std::move(image.rgb);
+  frame.nonfinite = nonfinite;
+  frame.sole_buffer = true;
   frame.index = index;
   frame.time_s = double(entry.number - entries_.front().number) / info_.frames_per_second;
   frame.source = entry.path;

@@ -36,8 +36,11 @@ class ExrSequenceSource : public FrameSource {
 
  private:
   SceneFrame decode(const SequenceEntry& entry, std::int64_t index) const;
-  // The frame from an image already read from the entry's file.
-  SceneFrame frame_from(ExrImage image, const SequenceEntry& entry, std::int64_t index) const;
+  // Reads the entry's file, each band of rows taken to Rec.709 and cd/m^2
+  // and its non-finite pixels counted while it is in cache.
+  ExrImage read(const SequenceEntry& entry, std::int64_t* nonfinite) const;
+  // The frame from an image so read.
+  SceneFrame frame_from(ExrImage image, std::int64_t nonfinite, const SequenceEntry& entry, std::int64_t index) const;
 
   ExrSequenceOptions options_;
   std::vector<SequenceEntry> entries_;

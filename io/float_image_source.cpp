@@ -88,6 +88,7 @@ std::optional<SceneFrame> FloatImageSource::next() {
   f.index = index;
   f.time_s = double(entry.number - entries_.front().number) / info_.frames_per_second;
   f.source = entry.path;
+  f.sole_buffer = true;
   return f;
 }
 

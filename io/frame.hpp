@@ -15,6 +15,12 @@ struct SceneFrame {
   double time_s = 0.0;     // presentation time from the first frame
   std::int64_t index = 0;  // position in the stream, 0-based
   std::string source;      // file name (or stream name) for messages
+  // Pixels with a NaN or infinite channel, when the source counted them
+  // (-1: not counted).
+  std::int64_t nonfinite = -1;
+  // rgb's buffer was made for this frame alone and no one writes to it
+  // again: a holder may keep a reference to it instead of a copy.
+  bool sole_buffer = false;
 };
 
 // A display-referred frame ready for writing. `linear` is display-linear

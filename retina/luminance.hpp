@@ -15,5 +15,7 @@ inline float photopic_luminance(const cv::Vec3f& rgb) {
 // The photopic luminance of each pixel of `rgb` (CV_32FC3) as CV_32F, with
 // luminance below floor_cd_m2, and non-finite luminance, set to the floor.
 cv::Mat floored_luminance(const cv::Mat& rgb, double floor_cd_m2);
+// The same for one row of n interleaved RGB pixels, into out[0, n).
+void floored_luminance_row(const float* rgb, float floor_cd_m2, float* out, int n);
 
 }  // namespace eyestream::retina

@@ -11,22 +11,24 @@ namespace eyestream::retina {
 
 namespace {
 
+// sum_x a[x] w[x] over [x0, x1) in double (w = 1 when null).
+double row_sum(const float* a, const float* w, int x0, int x1) {
+  double s = 0.0;
+  if (w)
+    for (int x = x0; x < x1; ++x) s += double(a[x]) * double(w[x]);
+  else
+    for (int x = x0; x < x1; ++x) s += a[x];
+  return s;
+}
+
 // Sum over rows [y0, y1) of sum_x l(y, x) w(y, x) for x in [x0, x1) (w = 1
 // when empty), each row in double, rows added in order: the same value
 // whatever the thread count.
 double region_sum(const cv::Mat& l, const cv::Mat& w, int x0, int x1, int y0, int y1) {
   std::vector<double> rows(size_t(std::max(0, y1 - y0)), 0.0);
   const auto sum_rows = [&](const cv::Range& r) {
-    for (int y = r.start; y < r.end; ++y) {
-      const float* a = l.ptr<float>(y);
-      const float* b = w.empty() ? nullptr : w.ptr<float>(y);
-      double s = 0.0;
-      if (b)
-        for (int x = x0; x < x1; ++x) s += double(a[x]) * double(b[x]);
-      else
-        for (int x = x0; x < x1; ++x) s += a[x];
-      rows[size_t(y - y0)] = s;
-    }
+    for (int y = r.start; y < r.end; ++y)
+      rows[size_t(y - y0)] = row_sum(l.ptr<float>(y), w.empty() ? nullptr : w.ptr<float>(y), x0, x1);
   };
   if (double(x1 - x0) * double(y1 - y0) > 1e5)
     cv::parallel_for_(cv::Range(y0, y1), sum_rows);
@@ -48,6 +50,27 @@ LuminanceField::LuminanceField(const cv::Mat& rgb, double floor_cd_m2, const cv:
     CV_Assert(weights.type() == CV_32F && weights.size() == luminance_.size());
     mean_ = region_sum(luminance_, weights, 0, cols, 0, rows) / region_sum(weights, cv::Mat(), 0, cols, 0, rows);
   }
+}
+
+double sum_of_weights(const cv::Mat& weights) {
+  return weights.empty() ? 0.0 : region_sum(weights, cv::Mat(), 0, weights.cols, 0, weights.rows);
+}
+
+double frame_mean_luminance(const cv::Mat& rgb, double floor_cd_m2, const cv::Mat& weights, double weight_total) {
+  CV_Assert(rgb.type() == CV_32FC3 && (weights.empty() || (weights.type() == CV_32F && weights.size() == rgb.size())));
+  // As the constructor, each row's luminance made and summed while in cache.
+  std::vector<double> sums(size_t(rgb.rows), 0.0);
+  const float floor = float(floor_cd_m2);
+  cv::parallel_for_(cv::Range(0, rgb.rows), [&](const cv::Range& r) {
+    std::vector<float> l(size_t(rgb.cols));
+    for (int y = r.start; y < r.end; ++y) {
+      floored_luminance_row(rgb.ptr<float>(y), floor, l.data(), rgb.cols);
+      sums[size_t(y)] = row_sum(l.data(), weights.empty() ? nullptr : weights.ptr<float>(y), 0, rgb.cols);
+    }
+  });
+  double total = 0.0;
+  for (double s : sums) total += s;
+  return weights.empty() ? total / (double(rgb.cols) * double(rgb.rows)) : total / weight_total;
 }
 
 double LuminanceField::patch_log_mean(double x, double y, double half_x, double half_y, double surround_cd_m2) const {

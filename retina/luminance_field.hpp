@@ -44,6 +44,13 @@ class LuminanceField {
   double mean_ = 0.0;
 };
 
+// The value LuminanceField(rgb, floor_cd_m2, weights).frame_mean() has,
+// bit for bit, in one pass that keeps no luminance map: the pupil's field
+// on a frame whose own field is not otherwise read. `weight_total` is
+// sum_of_weights(weights) (unused when `weights` is empty).
+double frame_mean_luminance(const cv::Mat& rgb, double floor_cd_m2, const cv::Mat& weights, double weight_total);
+double sum_of_weights(const cv::Mat& weights);
+
 // The geometric mean luminance (cd/m^2) of the band of width band_px along
 // the frame's edge (the whole frame when the band covers it): what the
 // world beyond the frame is taken to be. Geometric, so one bright light in

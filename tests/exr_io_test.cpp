@@ -1,11 +1,14 @@
 #include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfCompression.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStandardAttributes.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
+#include <limits>
 
 #include "io/error.hpp"
 #include "io/exr_file.hpp"
@@ -166,6 +169,62 @@ TEST(ExrSequenceSource, FrameWithOtherChannelsIsAnInputErrorNamingIt) {
     EXPECT_NE(std::string(e.what()).find("c_01.exr: frame 1 has channels Y, the sequence began with RGB"),
               std::string::npos)
         << e.what();
+  }
+}
+
+// A float RGB file in the given compression, with a white luminance.
+void write_compressed(const std::string& path, const cv::Mat& rgb, Imf::Compression compression, float white) {
+  Imf::Header header(rgb.cols, rgb.rows);
+  header.compression() = compression;
+  for (const char* n : {"R", "G", "B"}) header.channels().insert(n, Imf::Channel(Imf::FLOAT));
+  Imf::addWhiteLuminance(header, white);
+  Imf::OutputFile file(path.c_str(), header);
+  Imf::FrameBuffer fb;
+  char* base = const_cast<char*>(reinterpret_cast<const char*>(rgb.ptr<float>()));
+  const size_t xs = 3 * sizeof(float), ys = xs * size_t(rgb.cols);
+  for (int c = 0; c < 3; ++c) fb.insert(std::string(1, "RGB"[c]), Imf::Slice(Imf::FLOAT, base + c * sizeof(float), xs, ys));
+  file.setFrameBuffer(fb);
+  file.writePixels(rgb.rows);
+}
+
+TEST(ExrSequenceSource, EveryBandIsScaledOnceAndItsNonFinitePixelsCounted) {
+  // The source reads a file in bands of whole line buffers (1, 16 or 32
+  // lines by compression), scales each and counts its non-finite pixels
+  // while it is in cache. 83 rows: no compression's band divides them.
+  // Placed: NaN and infinities at band edges (rows 0, 15, 16, 31, 32, 82),
+  // one pixel with two bad channels (counted once), and a finite value that
+  // the white luminance takes beyond float's range (counted: it is infinite
+  // in candelas): 8 pixels.
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  cv::Mat in = ramp(13, 83);
+  in.at<cv::Vec3f>(0, 0)[0] = nan;
+  in.at<cv::Vec3f>(15, 12)[1] = inf;
+  in.at<cv::Vec3f>(16, 3)[2] = -inf;
+  in.at<cv::Vec3f>(31, 7) = cv::Vec3f(nan, inf, 1.0f);
+  in.at<cv::Vec3f>(32, 0)[1] = nan;
+  in.at<cv::Vec3f>(82, 12)[2] = nan;
+  in.at<cv::Vec3f>(50, 5)[0] = 3e38f;
+  in.at<cv::Vec3f>(81, 1)[2] = -inf;
+  const float white = 10.0f;
+  for (Imf::Compression c : {Imf::NO_COMPRESSION, Imf::ZIP_COMPRESSION, Imf::PIZ_COMPRESSION}) {
+    SCOPED_TRACE(int(c));
+    ScratchDir dir;
+    write_compressed(dir / "n.exr", in, c, white);
+    const std::optional<SceneFrame> f = ExrSequenceSource(dir / "n.exr", {}).next();
+    ASSERT_TRUE(f);
+    EXPECT_EQ(f->nonfinite, 8);
+    EXPECT_TRUE(f->sole_buffer);
+    // Every other value is the file's times the white luminance, once.
+    int compared = 0;
+    for (int y = 0; y < in.rows; ++y)
+      for (int x = 0; x < in.cols; ++x)
+        for (int k = 0; k < 3; ++k) {
+          const float v = in.at<cv::Vec3f>(y, x)[k];
+          if (!std::isfinite(v) || std::abs(v) > 1e37f) continue;
+          ASSERT_EQ(f->rgb.at<cv::Vec3f>(y, x)[k], v * white) << y << " " << x << " " << k;
+          ++compared;
+        }
+    EXPECT_GT(compared, 3200);
   }
 }
 

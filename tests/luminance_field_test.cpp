@@ -58,6 +58,35 @@ TEST(LuminanceField, BlackAndNonFinitePixelsCountAsTheFloor) {
   EXPECT_NEAR(field.patch_log_mean(1, 1, 1.0, 1.0), -4.0, 1e-6);
 }
 
+TEST(FrameMeanLuminance, IsTheFieldsMeanBitForBitWithAndWithoutWeights) {
+  // The pupil's field is taken in one pass when the field itself is not
+  // read: it must be the same number, not a close one (outputs stay
+  // byte-identical). The oracle for the value itself is the mean computed
+  // here in long double, weighted by hand.
+  cv::Mat rgb(37, 53, CV_32FC3), weights(37, 53, CV_32F);
+  cv::RNG rng(7);
+  rng.fill(rgb, cv::RNG::UNIFORM, cv::Scalar::all(-1.0), cv::Scalar::all(2e4));
+  rng.fill(weights, cv::RNG::UNIFORM, 0.2, 1.0);
+  rgb.at<cv::Vec3f>(3, 4)[1] = std::numeric_limits<float>::quiet_NaN();
+  const double floor = 1e-3;
+  long double sum = 0, weighted = 0, total_weight = 0;
+  for (int y = 0; y < rgb.rows; ++y)
+    for (int x = 0; x < rgb.cols; ++x) {
+      const float l = photopic_luminance(rgb.at<cv::Vec3f>(y, x));
+      const long double v = (std::isfinite(l) && l > float(floor)) ? l : float(floor);
+      sum += v;
+      weighted += v * weights.at<float>(y, x);
+      total_weight += weights.at<float>(y, x);
+    }
+  const double plain = frame_mean_luminance(rgb, floor, cv::Mat(), 0.0);
+  const double with_weights = frame_mean_luminance(rgb, floor, weights, sum_of_weights(weights));
+  EXPECT_EQ(plain, LuminanceField(rgb, floor).frame_mean());
+  EXPECT_EQ(with_weights, LuminanceField(rgb, floor, weights).frame_mean());
+  EXPECT_NEAR(plain, double(sum / (37 * 53)), 1e-9 * plain);
+  EXPECT_NEAR(with_weights, double(weighted / total_weight), 1e-9 * with_weights);
+  EXPECT_NE(plain, with_weights);
+}
+
 }  // namespace
 }  // namespace eyestream::retina
 

@@ -3,6 +3,7 @@
 #include "pipeline/eye/frame_buffer_pool.hpp"
 
 #include <cmath>
+#include <optional>
 
 #include "glare/pupil.hpp"
 #include "glare/pupil_dynamics.hpp"
@@ -21,7 +22,8 @@ EyeSimulator::EyeSimulator(Plan plan)
       retina_(std::make_unique<RetinaStage>(plan_)),
       mesopic_(std::make_unique<MesopicStage>(plan_)),
       glare_(plan_.glare.enabled ? std::make_unique<GlareStage>(plan_) : nullptr),
-      solid_angles_(plan_.projection->identity() ? cv::Mat() : plan_.projection->solid_angle_weights()) {}
+      solid_angles_(plan_.projection->identity() ? cv::Mat() : plan_.projection->solid_angle_weights()),
+      solid_angle_sum_(retina::sum_of_weights(solid_angles_)) {}
 
 double EyeSimulator::patch_log_mean(const retina::LuminanceField& field, double x, double y, double surround) const {
   // The patch is patch_deg wide in true angle at the gaze.
@@ -35,7 +37,7 @@ double EyeSimulator::patch_log_mean(const retina::LuminanceField& field, double 
 io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::vector<GazeSegment>& segments,
                                        FrameReport* report, const cv::Mat& target_mask) {
   // Non-finite pixels are counted and seen as black; they reach no stage.
-  const std::int64_t nonfinite = count_nonfinite(frame.rgb);
+  const std::int64_t nonfinite = frame.nonfinite >= 0 ? frame.nonfinite : count_nonfinite(frame.rgb);
   cv::Mat scene = nonfinite ? finite_copy(frame.rgb) : frame.rgb;
   // What the lens lets through, for an aged lens (before every stage: the
   // pupil, the adaptation and the glare all see the light that reaches
@@ -50,11 +52,22 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
   auto clock = std::chrono::steady_clock::now();
   StageActivity active;
   StageTimes times;
-  const retina::LuminanceField scene_field(scene, plan_.dark_cd_m2, solid_angles_);
+  // The scene's own field is read on the first frame and where the retina
+  // sees the scene itself (no glare ran); else only its mean is, which is
+  // made in one pass without the field.
+  std::optional<retina::LuminanceField> scene_field_made;
+  const auto scene_field = [&]() -> const retina::LuminanceField& {
+    if (!scene_field_made) scene_field_made.emplace(scene, plan_.dark_cd_m2, solid_angles_);
+    return *scene_field_made;
+  };
+  if (!glare_ || !adaptation_) scene_field();
+  const double scene_mean = scene_field_made
+                                ? scene_field_made->frame_mean()
+                                : retina::frame_mean_luminance(scene, plan_.dark_cd_m2, solid_angles_, solid_angle_sum_);
   const double surround = plan_.surround_from_edge
                               ? retina::edge_log_mean(scene, plan_.pixels_per_degree, plan_.dark_cd_m2)
                               : plan_.surround_cd_m2;
-  const double field_log = std::log10(std::max(scene_field.frame_mean(), plan_.dark_cd_m2));
+  const double field_log = std::log10(std::max(scene_mean, plan_.dark_cd_m2));
   const auto pupil_target = [&](bool closed) {
     return glare::pupil_mm(plan_.glare.viewer, closed ? plan_.dark_log : field_log, plan_.frame_area_deg2());
   };
@@ -64,13 +77,18 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
   // the interval (on the first frame, the scene's target).
   const GazeSegment& first = segments.front();
   const double optics_log =
-      adaptation_ ? *adaptation_ : patch_log_mean(scene_field, first.x, first.y, surround);
+      adaptation_ ? *adaptation_ : patch_log_mean(scene_field(), first.x, first.y, surround);
   if (!pupil_) pupil_ = pupil_target(false);
   // The optics' pupil: the recorded one when asked for and the log has
   // one for this frame, else the model's (which goes on either way).
   const double recorded = plan_.pupil_from_gaze ? first.recorded_pupil_mm : NAN;
   const double optics_pupil = std::isfinite(recorded) ? recorded : *pupil_;
-  if (glare_) glare_->set_moment(frame.time_s, first.x, first.y);
+  if (glare_) {
+    glare_->set_moment(frame.time_s, first.x, first.y);
+    // A copy made here, or a frame its source made for itself, is written
+    // by no one again.
+    if (scene.data != frame.rgb.data || frame.sole_buffer) glare_->set_rgb_immutable();
+  }
   const cv::Mat retinal =
       glare_ ? glare_->apply(scene, optics_log, surround, optics_pupil, &active.glare, &active.glare_reused) : scene;
   times.glare_ms = lap_ms(clock);
@@ -79,7 +97,7 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
   // eq. 3) toward the log of the mean retinal luminance around the gaze;
   // the pupil follows the field with its own time constants.
   const retina::LuminanceField field =
-      retinal.data == scene.data ? scene_field : retina::LuminanceField(retinal, plan_.dark_cd_m2);
+      retinal.data == scene.data ? scene_field() : retina::LuminanceField(retinal, plan_.dark_cd_m2);
   double target = plan_.dark_log;
   std::vector<double> adapted;
   adapted.reserve(segments.size());

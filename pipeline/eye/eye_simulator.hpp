@@ -88,6 +88,7 @@ class EyeSimulator {
   std::unique_ptr<MesopicStage> mesopic_;
   std::unique_ptr<GlareStage> glare_;
   cv::Mat solid_angles_;  // each pixel's solid angle (empty: all equal), for the pupil's field
+  double solid_angle_sum_;
 };
 
 }  // namespace eyestream::pipeline

@@ -1,6 +1,7 @@
 #include "pipeline/eye/glare_stage.hpp"
 
 #include <cstring>
+#include <utility>
 #include <opencv2/imgproc.hpp>
 
 #include "glare/uniform_field.hpp"
@@ -259,8 +260,12 @@ bool GlareStage::Cache::matches(const cv::Mat& rgb, const glare::PsfWeights& w, 
   return true;
 }
 
-void GlareStage::Cache::keep(const cv::Mat& rgb, const glare::PsfWeights& w, double s, const cv::Mat& out) {
-  rgb.copyTo(scene);
+void GlareStage::Cache::keep(const cv::Mat& rgb, bool immutable, const glare::PsfWeights& w, double s,
+                             const cv::Mat& out) {
+  if (immutable && rgb.data != scene.data)
+    scene = rgb;
+  else
+    rgb.copyTo(scene);
   weights = w;
   surround = s;
   retinal = out;
@@ -277,6 +282,7 @@ cv::Mat GlareStage::with_wave_lines(const cv::Mat& light, const glare::PsfWeight
 cv::Mat GlareStage::apply(const cv::Mat& rgb, double adaptation_log, double surround, double pupil_mm,
                           bool* ran, bool* reused) {
   if (reused) *reused = false;
+  const bool immutable = std::exchange(rgb_immutable_, false);
   // The optics' inputs are quantised (1e-4 log10 units, 1e-3 mm: weight
   // changes below 1e-5), so a still frame reuses its glare until they move,
   // and a run resumed from a checkpoint computes exactly what it reused.
@@ -300,7 +306,7 @@ cv::Mat GlareStage::apply(const cv::Mat& rgb, double adaptation_log, double surr
     }
     if (ran) *ran = true;
     cv::Mat out = spread(rgb, w, surround);
-    if (plan_.skip) cache_.keep(rgb, w, surround, out);
+    if (plan_.skip) cache_.keep(rgb, immutable, w, surround, out);
     return with_wave_lines(rgb, w, pupil_mm, out, plan_.skip);
   }
   // The excess over the display peak, with the pixel's colour (Spencer et

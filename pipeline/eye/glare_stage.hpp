@@ -36,6 +36,10 @@ class GlareStage {
   // The frame's moment for the wave-optics lines (--flare-model wave): its
   // time and the gaze (frame pixels). Set before apply().
   void set_moment(double time_s, double gaze_x, double gaze_y) { moment_ = {time_s, {gaze_x, gaze_y}}; }
+  // The next apply()'s rgb is a buffer no one writes to again (a frame its
+  // source made for itself): the still-frame cache keeps a reference to it,
+  // not a copy. Set before apply(), which clears it.
+  void set_rgb_immutable() { rgb_immutable_ = true; }
 
   // The error bound of skipping a uniform field (relative).
   static constexpr double kUniformTolerance = 1e-3;
@@ -120,9 +124,12 @@ class GlareStage {
     glare::PsfWeights weights;
     double surround = 0.0;
     bool matches(const cv::Mat& rgb, const glare::PsfWeights& w, double surround_cd_m2) const;
-    void keep(const cv::Mat& rgb, const glare::PsfWeights& w, double surround_cd_m2, const cv::Mat& retinal);
+    // `rgb` is held by reference when `immutable`, else copied.
+    void keep(const cv::Mat& rgb, bool immutable, const glare::PsfWeights& w, double surround_cd_m2,
+              const cv::Mat& retinal);
   };
   Cache cache_;
+  bool rgb_immutable_ = false;
 };
 
 }  // namespace eyestream::pipeline

@@ -3,30 +3,15 @@
 #include <cmath>
 #include <vector>
 
-#include "retina/bit_masks.hpp"
-#include "retina/vector_clones.hpp"
+#include "io/nonfinite_pixels.hpp"
 
 namespace eyestream::pipeline {
-
-namespace {
-
-// The pixels of a row with a NaN or infinite value: an exponent of all
-// ones, tested by bits so the loop is vectorised (vector_clones.hpp).
-EYESTREAM_VECTOR_CLONES
-int nonfinite_in_row(const float* p, int pixels) {
-  int n = 0;
-  for (int x = 0; x < pixels; ++x)
-    n += int(!(retina::finite_bits(p[3 * x]) & retina::finite_bits(p[3 * x + 1]) & retina::finite_bits(p[3 * x + 2])));
-  return n;
-}
-
-}  // namespace
 
 std::int64_t count_nonfinite(const cv::Mat& rgb) {
   CV_Assert(rgb.type() == CV_32FC3);
   std::vector<std::int64_t> per_row(size_t(rgb.rows), 0);
   cv::parallel_for_(cv::Range(0, rgb.rows), [&](const cv::Range& rows) {
-    for (int y = rows.start; y < rows.end; ++y) per_row[size_t(y)] = nonfinite_in_row(rgb.ptr<float>(y), rgb.cols);
+    for (int y = rows.start; y < rows.end; ++y) per_row[size_t(y)] = io::nonfinite_in_row(rgb.ptr<float>(y), rgb.cols);
   });
   std::int64_t total = 0;
   for (std::int64_t n : per_row) total += n;
