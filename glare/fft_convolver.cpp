@@ -35,36 +35,57 @@ struct Fftw {
 
 constexpr int kColumnBlock = 16;  // columns transformed together (fixed: results do not depend on threads)
 
-// The spectrum of a centred kernel on an nx x ny torus (r2c layout ny x
+// The spectra of centred kernels on an nx x ny torus (r2c layout ny x
 // (nx / 2 + 1)). The eye's PSF is point-symmetric (radial, its flare lines
 // drawn in pairs 180 degrees apart), so its spectrum is real: only the real
 // parts are kept, half the memory and a third of the reads of complex ones.
 // A kernel whose imaginary parts exceed 1e-9 of its largest value is refused.
-std::vector<double> kernel_spectrum(const cv::Mat& kernel, int nx, int ny) {
-  std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-  double* real = fftw_alloc_real(size_t(nx) * ny);
-  fftw_complex* spectrum = fftw_alloc_complex(size_t(nx / 2 + 1) * ny);
-  const fftw_plan plan = fftw_plan_dft_r2c_2d(ny, nx, real, spectrum, FFTW_ESTIMATE);
-  std::memset(real, 0, sizeof(double) * size_t(nx) * ny);
-  const int cx = kernel.cols / 2, cy = kernel.rows / 2;
-  for (int y = 0; y < kernel.rows; ++y)
-    for (int x = 0; x < kernel.cols; ++x) {
-      const int wx = ((x - cx) % nx + nx) % nx, wy = ((y - cy) % ny + ny) % ny;
-      real[size_t(wy) * nx + wx] += kernel.at<double>(y, x);
-    }
-  fftw_execute(plan);
-  const size_t n = size_t(nx / 2 + 1) * ny;
-  std::vector<double> out(n);
-  double largest = 0.0, imaginary = 0.0;
-  for (size_t i = 0; i < n; ++i) {
-    out[i] = spectrum[i][0];
-    largest = std::max(largest, std::abs(spectrum[i][0]));
-    imaginary = std::max(imaginary, std::abs(spectrum[i][1]));
+// One plan serves every kernel; the kernels are transformed in parallel,
+// each through its own arrays (the values do not depend on the thread).
+std::vector<std::vector<double>> kernel_spectra(const std::vector<const cv::Mat*>& kernels, int nx, int ny) {
+  const size_t n_real = size_t(nx) * ny, n = size_t(nx / 2 + 1) * ny;
+  fftw_plan plan;
+  {
+    std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+    double* real = fftw_alloc_real(n_real);
+    fftw_complex* spectrum = fftw_alloc_complex(n);
+    plan = fftw_plan_dft_r2c_2d(ny, nx, real, spectrum, FFTW_ESTIMATE);
+    fftw_free(real);
+    fftw_free(spectrum);
   }
-  fftw_destroy_plan(plan);
-  fftw_free(real);
-  fftw_free(spectrum);
-  CV_Assert(imaginary <= 1e-9 * largest && "glare kernels must be point-symmetric (a real spectrum)");
+  std::vector<std::vector<double>> out(kernels.size());
+  std::vector<char> refused(kernels.size(), 0);
+  cv::parallel_for_(cv::Range(0, int(kernels.size())), [&](const cv::Range& r) {
+    double* real = fftw_alloc_real(n_real);
+    fftw_complex* spectrum = fftw_alloc_complex(n);
+    for (int k = r.start; k < r.end; ++k) {
+      const cv::Mat& kernel = *kernels[size_t(k)];
+      std::memset(real, 0, sizeof(double) * n_real);
+      const int cx = kernel.cols / 2, cy = kernel.rows / 2;
+      for (int y = 0; y < kernel.rows; ++y)
+        for (int x = 0; x < kernel.cols; ++x) {
+          const int wx = ((x - cx) % nx + nx) % nx, wy = ((y - cy) % ny + ny) % ny;
+          real[size_t(wy) * nx + wx] += kernel.at<double>(y, x);
+        }
+      fftw_execute_dft_r2c(plan, real, spectrum);
+      std::vector<double>& s = out[size_t(k)];
+      s.resize(n);
+      double largest = 0.0, imaginary = 0.0;
+      for (size_t i = 0; i < n; ++i) {
+        s[i] = spectrum[i][0];
+        largest = std::max(largest, std::abs(spectrum[i][0]));
+        imaginary = std::max(imaginary, std::abs(spectrum[i][1]));
+      }
+      refused[size_t(k)] = !(imaginary <= 1e-9 * largest);
+    }
+    fftw_free(real);
+    fftw_free(spectrum);
+  });
+  {
+    std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+    fftw_destroy_plan(plan);
+  }
+  for (char bad : refused) CV_Assert(!bad && "glare kernels must be point-symmetric (a real spectrum)");
   return out;
 }
 
@@ -111,9 +132,10 @@ class RowColumnEngine final : public FftConvolver::Engine {
     stride_ = (nc_ + kColumnBlock - 1) / kColumnBlock * kColumnBlock;  // whole blocks: every block aligned alike
     // Kernel spectra (real) block by block, each block's ny x kColumnBlock
     // values contiguous, as the column pass reads them.
-    const cv::Mat* parts[6] = {&k.core, &k.inner, &k.outer, &k.halo[0], &k.halo[1], &k.halo[2]};
+    const std::vector<std::vector<double>> spectra =
+        kernel_spectra({&k.core, &k.inner, &k.outer, &k.halo[0], &k.halo[1], &k.halo[2]}, nx, ny);
     for (int i = 0; i < 6; ++i) {
-      const std::vector<double> s = kernel_spectrum(*parts[i], nx, ny);
+      const std::vector<double>& s = spectra[size_t(i)];
       spectra_[i].assign(size_t(ny) * stride_, T(0));
       for (int y = 0; y < ny; ++y)
         for (int x = 0; x < nc_; ++x)
