@@ -256,12 +256,22 @@ cv::Size2d FrameProjection::retina_reach() const {
   return {across + 1.0, down + 1.0};  // a pixel's margin for the interpolation
 }
 
+FrameProjection::GazeAxes FrameProjection::gaze_axes(cv::Point2d gaze) const {
+  GazeAxes g;
+  g.ez = cv::normalize(cv::Vec3d(gaze.x - 0.5 * frame_.width, gaze.y - 0.5 * frame_.height, f_px_));
+  g.ex = cv::normalize(cv::Vec3d(1, 0, 0) - g.ez[0] * g.ez);
+  g.ey = g.ez.cross(g.ex);
+  return g;
+}
+
 cv::Vec2d FrameProjection::gaze_offset(cv::Point2d gaze, cv::Point2d p) const {
   if (kind_ == Projection::equidistant) return {(p.x - gaze.x) * scale_, (p.y - gaze.y) * scale_};
-  const cv::Vec3d ez = cv::normalize(cv::Vec3d(gaze.x - 0.5 * frame_.width, gaze.y - 0.5 * frame_.height, f_px_));
-  const cv::Vec3d ex = cv::normalize(cv::Vec3d(1, 0, 0) - ez[0] * ez), ey = ez.cross(ex);
+  return offset_from(gaze_axes(gaze), p);
+}
+
+cv::Vec2d FrameProjection::offset_from(const GazeAxes& g, cv::Point2d p) const {
   const cv::Vec3d d(p.x - 0.5 * frame_.width, p.y - 0.5 * frame_.height, f_px_);
-  const double a = d.dot(ex), b = d.dot(ey), c = d.dot(ez), s = std::hypot(a, b);
+  const double a = d.dot(g.ex), b = d.dot(g.ey), c = d.dot(g.ez), s = std::hypot(a, b);
   const double k = s > 0.0 ? fp_ * std::atan2(s, c) / s : 0.0;
   return {k * a, k * b};
 }
@@ -351,8 +361,9 @@ cv::Mat FrameProjection::gaze_positions(cv::Point2d gaze, cv::Size size, double 
                                             float(origin.y + scale * ((y + 0.5) * sy - gaze.y)));
     return out;
   }
+  const GazeAxes axes = gaze_axes(gaze);
   const auto exact = [&](double X, double Y) {
-    const cv::Vec2d o = gaze_offset(gaze, {X, Y});
+    const cv::Vec2d o = kind_ == Projection::equidistant ? gaze_offset(gaze, {X, Y}) : offset_from(axes, {X, Y});
     return cv::Vec2d(origin.x + scale * o[0], origin.y + scale * o[1]);
   };
   // Exact at nodes every kStep pixels (and the last), bilinear between.
@@ -370,16 +381,25 @@ cv::Mat FrameProjection::gaze_positions(cv::Point2d gaze, cv::Size size, double 
       for (int i = 0; i < grid.cols; ++i)
         grid.at<cv::Vec2d>(j, i) = exact((nx[size_t(i)] + 0.5) * sx, (ny[size_t(j)] + 0.5) * sy);
   });
+  // Each column's node and weight, once for every row.
+  std::vector<int> column_node(size_t(size.width));
+  std::vector<double> column_weight(size_t(size.width));
+  for (int x = 0; x < size.width; ++x) {
+    const int i = std::min(x / kStep, grid.cols - 2);
+    column_node[size_t(x)] = i;
+    column_weight[size_t(x)] = double(x - nx[size_t(i)]) / (nx[size_t(i) + 1] - nx[size_t(i)]);
+  }
   cv::parallel_for_(cv::Range(0, size.height), [&](const cv::Range& r) {
     for (int y = r.start; y < r.end; ++y) {
       const int j = std::min(y / kStep, grid.rows - 2);
       const double fy = double(y - ny[size_t(j)]) / (ny[size_t(j) + 1] - ny[size_t(j)]);
+      const cv::Vec2d* g0 = grid.ptr<cv::Vec2d>(j);
+      const cv::Vec2d* g1 = grid.ptr<cv::Vec2d>(j + 1);
       cv::Vec2f* o = out.ptr<cv::Vec2f>(y);
       for (int x = 0; x < size.width; ++x) {
-        const int i = std::min(x / kStep, grid.cols - 2);
-        const double fx = double(x - nx[size_t(i)]) / (nx[size_t(i) + 1] - nx[size_t(i)]);
-        const cv::Vec2d v = (grid.at<cv::Vec2d>(j, i) * (1 - fx) + grid.at<cv::Vec2d>(j, i + 1) * fx) * (1 - fy) +
-                            (grid.at<cv::Vec2d>(j + 1, i) * (1 - fx) + grid.at<cv::Vec2d>(j + 1, i + 1) * fx) * fy;
+        const int i = column_node[size_t(x)];
+        const double fx = column_weight[size_t(x)];
+        const cv::Vec2d v = (g0[i] * (1 - fx) + g0[i + 1] * fx) * (1 - fy) + (g1[i] * (1 - fx) + g1[i + 1] * fx) * fy;
         o[x] = cv::Vec2f(float(v[0]), float(v[1]));
       }
     }

@@ -98,6 +98,14 @@ class FrameProjection {
   const cv::Mat& plane_positions() const { return positions_; }
 
  private:
+  // Rectilinear: the gaze's direction ez and the axes ex (the frame's
+  // horizontal there) and ey across it, made once for many points.
+  struct GazeAxes {
+    cv::Vec3d ex, ey, ez;
+  };
+  GazeAxes gaze_axes(cv::Point2d gaze) const;
+  cv::Vec2d offset_from(const GazeAxes& axes, cv::Point2d point) const;
+
   Projection kind_;
   cv::Size frame_, plane_;
   double fov_deg_, scale_;
