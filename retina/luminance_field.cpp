@@ -42,14 +42,18 @@ double region_sum(const cv::Mat& l, const cv::Mat& w, int x0, int x1, int y0, in
 }  // namespace
 
 LuminanceField::LuminanceField(const cv::Mat& rgb, double floor_cd_m2, const cv::Mat& weights)
-    : luminance_(floored_luminance(rgb, floor_cd_m2)) {
+    : luminance_(floored_luminance(rgb, floor_cd_m2)), weights_(weights) {
+  CV_Assert(weights.empty() || (weights.type() == CV_32F && weights.size() == luminance_.size()));
+}
+
+double LuminanceField::frame_mean() const {
+  if (mean_ >= 0.0) return mean_;
   const int cols = luminance_.cols, rows = luminance_.rows;
-  if (weights.empty()) {
+  if (weights_.empty())
     mean_ = region_sum(luminance_, cv::Mat(), 0, cols, 0, rows) / (double(cols) * double(rows));
-  } else {
-    CV_Assert(weights.type() == CV_32F && weights.size() == luminance_.size());
-    mean_ = region_sum(luminance_, weights, 0, cols, 0, rows) / region_sum(weights, cv::Mat(), 0, cols, 0, rows);
-  }
+  else
+    mean_ = region_sum(luminance_, weights_, 0, cols, 0, rows) / region_sum(weights_, cv::Mat(), 0, cols, 0, rows);
+  return mean_;
 }
 
 double sum_of_weights(const cv::Mat& weights) {

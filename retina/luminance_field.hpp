@@ -4,7 +4,7 @@
 // is mostly asked for a few small patches, so each is summed directly (in
 // double, row by row); a patch over kDirectSumPixels (a wide adaptation
 // patch) is read from an integral image of the frame, made on first need.
-// Not for concurrent use (the integral image is made lazily).
+// Not for concurrent use (the integral image and the mean are made lazily).
 #pragma once
 
 #include <opencv2/core.hpp>
@@ -32,7 +32,8 @@ class LuminanceField {
   double patch_log_mean(double x, double y, double half_x_px, double half_y_px, double surround_cd_m2) const;
 
   // Mean luminance of the whole frame (cd/m^2), weighted as constructed.
-  double frame_mean() const { return mean_; }
+  // Made on first call (most fields are read for patches only).
+  double frame_mean() const;
 
   // The floored luminance itself (CV_32F, frame-sized), for others to read.
   const cv::Mat& luminance() const { return luminance_; }
@@ -41,7 +42,8 @@ class LuminanceField {
   static constexpr double kDirectSumPixels = 65536;
   cv::Mat luminance_;  // CV_32F
   mutable cv::Mat integral_;  // CV_64F, (rows+1) x (cols+1); made when a patch is big
-  double mean_ = 0.0;
+  cv::Mat weights_;  // as constructed
+  mutable double mean_ = -1.0;  // < 0: not made yet
 };
 
 // The value LuminanceField(rgb, floor_cd_m2, weights).frame_mean() has,
