@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <opencv2/imgproc.hpp>
 
@@ -157,15 +158,24 @@ void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
     // A blur under 0.19 px gives its neighbours a weight under 1e-6
     // (exp(-1 / (2 0.19^2))): a copy, its variance left to the next level.
     cv::Mat made;
+    // The last level, when full-resolution and not the image itself, is
+    // written to its pixels row by row as this level's blur reads it.
+    const bool write_last = i > 1 && factor[size_t(i - 1)] == 1 && last.data != image.data;
+    bool written = false;
     if (extra < 0.19) {
       made = from;
     } else {
-      gaussian_blur(from, made, extra);
+      std::function<void(int)> write_row;
+      if (write_last && from.data == last.data) {
+        write_row = [&](int y) { write_full_row(image, first, row_deepest, i - 1, last, y); };
+        written = true;
+      }
+      gaussian_blur(from, made, extra, write_row);
       variance = std::max(variance, target);
     }
-    if (i > 1 && factor[size_t(i - 1)] == 1)
+    if (write_last && !written)
       write_full_level(image, first, row_deepest, i - 1, last);
-    else if (i > 1)
+    else if (i > 1 && factor[size_t(i - 1)] != 1)
       kept[size_t(i - 1)] = last;
     last = made;
   }
@@ -203,17 +213,20 @@ void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
   });
 }
 
+void AcuityLoss::write_full_row(cv::Mat& image, const cv::Mat& first, const std::vector<std::uint8_t>& row_deepest,
+                                int k, const cv::Mat& level, int y) {
+  if (row_deepest[size_t(y)] < k) return;
+  const std::uint8_t* k_row = first.ptr<std::uint8_t>(y);
+  const cv::Vec3f* in = level.ptr<cv::Vec3f>(y);
+  cv::Vec3f* out = image.ptr<cv::Vec3f>(y);
+  for (int x = 0; x < image.cols; ++x)
+    if (k_row[x] == k) out[x] = in[x];
+}
+
 void AcuityLoss::write_full_level(cv::Mat& image, const cv::Mat& first, const std::vector<std::uint8_t>& row_deepest,
                                   int k, const cv::Mat& level) {
   cv::parallel_for_(cv::Range(0, image.rows), [&](const cv::Range& rows) {
-    for (int y = rows.start; y < rows.end; ++y) {
-      if (row_deepest[size_t(y)] < k) continue;
-      const std::uint8_t* k_row = first.ptr<std::uint8_t>(y);
-      const cv::Vec3f* in = level.ptr<cv::Vec3f>(y);
-      cv::Vec3f* out = image.ptr<cv::Vec3f>(y);
-      for (int x = 0; x < image.cols; ++x)
-        if (k_row[x] == k) out[x] = in[x];
-    }
+    for (int y = rows.start; y < rows.end; ++y) write_full_row(image, first, row_deepest, k, level, y);
   });
 }
 

@@ -95,6 +95,9 @@ class AcuityLoss {
   // first kept band is k.
   static void write_full_level(cv::Mat& image, const cv::Mat& first, const std::vector<std::uint8_t>& row_deepest,
                                int k, const cv::Mat& level);
+  // The same for row y only.
+  static void write_full_row(cv::Mat& image, const cv::Mat& first, const std::vector<std::uint8_t>& row_deepest, int k,
+                             const cv::Mat& level, int y);
 
   AcuityParams params_;
   std::vector<double> sigmas_px_, tau_;

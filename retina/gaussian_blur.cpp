@@ -55,7 +55,7 @@ void blur_column(const float* const* rows, float* out, int n, const std::vector<
 
 }  // namespace
 
-void gaussian_blur(const cv::Mat& src, cv::Mat& dst, double sigma) {
+void gaussian_blur(const cv::Mat& src, cv::Mat& dst, double sigma, const std::function<void(int row)>& source_row_read) {
   CV_Assert(src.depth() == CV_32F && sigma > 0.0);
   const int ksize = cvRound(sigma * 8 + 1) | 1;
   const cv::Mat k = cv::getGaussianKernel(ksize, sigma, CV_64F);
@@ -77,7 +77,12 @@ void gaussian_blur(const cv::Mat& src, cv::Mat& dst, double sigma) {
         // frame, whichever thread runs the stripe.
         cv::Mat ring(span, n, CV_32F);
         const auto slot = [&](int j) { return ring.ptr<float>((j - range.start + span) % span); };
-        const auto fill = [&](int j) { blur_row(input.ptr<float>(std::clamp(j, 0, rows - 1)), slot(j), cols, channels, w); };
+        const auto fill = [&](int j) {
+          blur_row(input.ptr<float>(std::clamp(j, 0, rows - 1)), slot(j), cols, channels, w);
+          // Each row once: by the stripe it belongs to (the rows a stripe
+          // reads beyond its own, or replicated at the border, are another's).
+          if (source_row_read && j >= range.start && j < range.end) source_row_read(j);
+        };
         for (int j = range.start - r; j < range.start + r; ++j) fill(j);
         std::vector<const float*> rows_at(static_cast<size_t>(span));
         for (int y = range.start; y < range.end; ++y) {
