@@ -34,15 +34,29 @@ SceneFrame ExrSequenceSource::decode(const SequenceEntry& entry, std::int64_t in
 
 ExrImage ExrSequenceSource::read(const SequenceEntry& entry, std::int64_t* nonfinite) const {
   *nonfinite = 0;
-  return read_exr(entry.path, options_.max_pixels, options_.layer, [&](const ExrImage& image, cv::Mat rows) {
-    if (image.chromaticities) {
-      const cv::Matx33d m = to_rec709_matrix(*image.chromaticities);
-      if (!is_identity(m)) apply_matrix(rows, m);
-    }
+  const auto to_rec709 = [](const ExrImage& image) {
+    return image.chromaticities ? to_rec709_matrix(*image.chromaticities) : cv::Matx33d::eye();
+  };
+  const auto finish = [&](const ExrImage& image, cv::Mat& rows) {
     const double scale = options_.scale.value_or(image.white_luminance.value_or(1.0));
     if (scale != 1.0) rows *= scale;
     *nonfinite += nonfinite_pixels(rows);
+  };
+  // Most files are Rec.709: each band is scaled and counted as it is
+  // decoded. Other primaries take the whole image through the matrix
+  // first, as one call: cv::transform's vector and scalar paths round
+  // differently, so bands would change the last bit of the pixels at
+  // each band's end.
+  bool banded = false;
+  ExrImage image = read_exr(entry.path, options_.max_pixels, options_.layer, [&](const ExrImage& im, cv::Mat rows) {
+    banded = is_identity(to_rec709(im));
+    if (banded) finish(im, rows);
   });
+  if (!banded) {
+    apply_matrix(image.rgb, to_rec709(image));
+    finish(image, image.rgb);
+  }
+  return image;
 }
 
 SceneFrame ExrSequenceSource::frame_from(ExrImage image, std::int64_t nonfinite, const SequenceEntry& entry,

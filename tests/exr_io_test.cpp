@@ -173,9 +173,11 @@ TEST(ExrSequenceSource, FrameWithOtherChannelsIsAnInputErrorNamingIt) {
 }
 
 // A float RGB file in the given compression, with a white luminance.
-void write_compressed(const std::string& path, const cv::Mat& rgb, Imf::Compression compression, float white) {
+void write_compressed(const std::string& path, const cv::Mat& rgb, Imf::Compression compression, float white,
+                      const std::optional<Imf::Chromaticities>& chroma = std::nullopt) {
   Imf::Header header(rgb.cols, rgb.rows);
   header.compression() = compression;
+  if (chroma) Imf::addChromaticities(header, *chroma);
   for (const char* n : {"R", "G", "B"}) header.channels().insert(n, Imf::Channel(Imf::FLOAT));
   Imf::addWhiteLuminance(header, white);
   Imf::OutputFile file(path.c_str(), header);
@@ -225,6 +227,31 @@ TEST(ExrSequenceSource, EveryBandIsScaledOnceAndItsNonFinitePixelsCounted) {
           ++compared;
         }
     EXPECT_GT(compared, 3200);
+  }
+}
+
+TEST(ExrSequenceSource, OtherPrimariesGiveTheBytesOfOneTransformOfTheWholeImage) {
+  // cv::transform rounds its vector and scalar paths differently: a file in
+  // other primaries goes through the matrix as one image (as before the
+  // banded reading), not band by band, so its bytes do not depend on the
+  // compression's block height.
+  const Imf::Chromaticities bt2020(Imath::V2f(0.708f, 0.292f), Imath::V2f(0.170f, 0.797f), Imath::V2f(0.131f, 0.046f),
+                                   Imath::V2f(0.3127f, 0.3290f));
+  const cv::Mat in = ramp(13, 83);
+  for (Imf::Compression c : {Imf::NO_COMPRESSION, Imf::ZIP_COMPRESSION, Imf::PIZ_COMPRESSION}) {
+    SCOPED_TRACE(int(c));
+    ScratchDir dir;
+    write_compressed(dir / "p.exr", in, c, 4.0f, bt2020);
+    // The primaries as the file holds them (floats), through one call.
+    const ExrImage raw = read_exr(dir / "p.exr", 1 << 20);
+    ASSERT_TRUE(raw.chromaticities);
+    cv::Mat expected = in.clone();
+    apply_matrix(expected, to_rec709_matrix(*raw.chromaticities));
+    expected *= 4.0;
+    const std::optional<SceneFrame> f = ExrSequenceSource(dir / "p.exr", {}).next();
+    ASSERT_TRUE(f);
+    EXPECT_EQ(f->nonfinite, 0);
+    EXPECT_EQ(cv::norm(f->rgb, expected, cv::NORM_INF), 0.0);
   }
 }
 

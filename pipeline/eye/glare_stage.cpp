@@ -262,10 +262,13 @@ bool GlareStage::Cache::matches(const cv::Mat& rgb, const glare::PsfWeights& w, 
 
 void GlareStage::Cache::keep(const cv::Mat& rgb, bool immutable, const glare::PsfWeights& w, double s,
                              const cv::Mat& out) {
-  if (immutable && rgb.data != scene.data)
+  if (immutable && rgb.data != scene.data) {
     scene = rgb;
-  else
+  } else if (!immutable) {
+    if (scene_borrowed) scene.release();  // never copy into a frame the cache only borrowed
     rgb.copyTo(scene);
+  }
+  scene_borrowed = immutable;
   weights = w;
   surround = s;
   retinal = out;

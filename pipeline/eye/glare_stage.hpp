@@ -121,6 +121,7 @@ class GlareStage {
   // The last full-mode frame, for still scenes.
   struct Cache {
     cv::Mat scene, retinal;
+    bool scene_borrowed = false;  // scene is the caller's frame, not a copy
     glare::PsfWeights weights;
     double surround = 0.0;
     bool matches(const cv::Mat& rgb, const glare::PsfWeights& w, double surround_cd_m2) const;
