@@ -1,5 +1,7 @@
 #include "io/exr_sequence_source.hpp"
 
+#include <optional>
+
 #include "io/error.hpp"
 #include "io/exr_file.hpp"
 #include "io/nonfinite_pixels.hpp"
@@ -47,12 +49,12 @@ ExrImage ExrSequenceSource::read(const SequenceEntry& entry, std::int64_t* nonfi
   // first, as one call: cv::transform's vector and scalar paths round
   // differently, so bands would change the last bit of the pixels at
   // each band's end.
-  bool banded = false;
+  std::optional<bool> banded;  // decided once, at the first band (the header is read by then)
   ExrImage image = read_exr(entry.path, options_.max_pixels, options_.layer, [&](const ExrImage& im, cv::Mat rows) {
-    banded = is_identity(to_rec709(im));
-    if (banded) finish(im, rows);
+    if (!banded) banded = is_identity(to_rec709(im));
+    if (*banded) finish(im, rows);
   });
-  if (!banded) {
+  if (!banded.value_or(false)) {
     apply_matrix(image.rgb, to_rec709(image));
     finish(image, image.rgb);
   }
