@@ -1,12 +1,14 @@
 #include "glare/fft_convolver.hpp"
 
 #include "glare/fftw_planner.hpp"
+#include "glare/huge_pages.hpp"
 
 #include <fftw3.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <mutex>
 #include <vector>
 
@@ -36,13 +38,17 @@ struct Fftw {
 constexpr int kColumnBlock = 16;  // columns transformed together (fixed: results do not depend on threads)
 
 // The spectra of centred kernels on an nx x ny torus (r2c layout ny x
-// (nx / 2 + 1)). The eye's PSF is point-symmetric (radial, its flare lines
-// drawn in pairs 180 degrees apart), so its spectrum is real: only the real
-// parts are kept, half the memory and a third of the reads of complex ones.
-// A kernel whose imaginary parts exceed 1e-9 of its largest value is refused.
-// One plan serves every kernel; the kernels are transformed in parallel,
-// each through its own arrays (the values do not depend on the thread).
-std::vector<std::vector<double>> kernel_spectra(const std::vector<const cv::Mat*>& kernels, int nx, int ny) {
+// (nx / 2 + 1)), each handed to `keep(k, spectrum)` on the thread that
+// made it, before its array is reused (the engine stores them in its own
+// layout: no copy of all six is made first). The eye's PSF is
+// point-symmetric (radial, its flare lines drawn in pairs 180 degrees
+// apart), so its spectrum is real: the engine keeps only the real parts,
+// half the memory and a third of the reads of complex ones. A kernel whose
+// imaginary parts exceed 1e-9 of its largest value is refused. One plan
+// serves every kernel; the kernels are transformed in parallel, each
+// through its own arrays (the values do not depend on the thread).
+void kernel_spectra(const std::vector<const cv::Mat*>& kernels, int nx, int ny,
+                    const std::function<void(int, const fftw_complex*)>& keep) {
   const size_t n_real = size_t(nx) * ny, n = size_t(nx / 2 + 1) * ny;
   fftw_plan plan;
   {
@@ -53,11 +59,12 @@ std::vector<std::vector<double>> kernel_spectra(const std::vector<const cv::Mat*
     fftw_free(real);
     fftw_free(spectrum);
   }
-  std::vector<std::vector<double>> out(kernels.size());
   std::vector<char> refused(kernels.size(), 0);
   cv::parallel_for_(cv::Range(0, int(kernels.size())), [&](const cv::Range& r) {
     double* real = fftw_alloc_real(n_real);
     fftw_complex* spectrum = fftw_alloc_complex(n);
+    prefer_huge_pages(real, sizeof(double) * n_real);
+    prefer_huge_pages(spectrum, sizeof(fftw_complex) * n);
     for (int k = r.start; k < r.end; ++k) {
       const cv::Mat& kernel = *kernels[size_t(k)];
       std::memset(real, 0, sizeof(double) * n_real);
@@ -68,15 +75,13 @@ std::vector<std::vector<double>> kernel_spectra(const std::vector<const cv::Mat*
           real[size_t(wy) * nx + wx] += kernel.at<double>(y, x);
         }
       fftw_execute_dft_r2c(plan, real, spectrum);
-      std::vector<double>& s = out[size_t(k)];
-      s.resize(n);
       double largest = 0.0, imaginary = 0.0;
       for (size_t i = 0; i < n; ++i) {
-        s[i] = spectrum[i][0];
         largest = std::max(largest, std::abs(spectrum[i][0]));
         imaginary = std::max(imaginary, std::abs(spectrum[i][1]));
       }
       refused[size_t(k)] = !(imaginary <= 1e-9 * largest);
+      keep(k, spectrum);
     }
     fftw_free(real);
     fftw_free(spectrum);
@@ -86,7 +91,6 @@ std::vector<std::vector<double>> kernel_spectra(const std::vector<const cv::Mat*
     fftw_destroy_plan(plan);
   }
   for (char bad : refused) CV_Assert(!bad && "glare kernels must be point-symmetric (a real spectrum)");
-  return out;
 }
 
 }  // namespace
@@ -132,17 +136,22 @@ class RowColumnEngine final : public FftConvolver::Engine {
     stride_ = (nc_ + kColumnBlock - 1) / kColumnBlock * kColumnBlock;  // whole blocks: every block aligned alike
     // Kernel spectra (real) block by block, each block's ny x kColumnBlock
     // values contiguous, as the column pass reads them.
-    const std::vector<std::vector<double>> spectra =
-        kernel_spectra({&k.core, &k.inner, &k.outer, &k.halo[0], &k.halo[1], &k.halo[2]}, nx, ny);
-    for (int i = 0; i < 6; ++i) {
-      const std::vector<double>& s = spectra[size_t(i)];
-      spectra_[i].assign(size_t(ny) * stride_, T(0));
-      for (int y = 0; y < ny; ++y)
-        for (int x = 0; x < nc_; ++x)
-          spectra_[i][(size_t(x / kColumnBlock) * ny + y) * kColumnBlock + x % kColumnBlock] = T(s[size_t(y) * nc_ + x]);
+    for (std::vector<T>& s : spectra_) {
+      s.reserve(size_t(ny) * stride_);
+      prefer_huge_pages(s.data(), sizeof(T) * size_t(ny) * stride_);
+      s.assign(size_t(ny) * stride_, T(0));
     }
+    kernel_spectra({&k.core, &k.inner, &k.outer, &k.halo[0], &k.halo[1], &k.halo[2]}, nx, ny,
+                   [&](int i, const fftw_complex* s) {
+                     std::vector<T>& out = spectra_[i];
+                     for (int y = 0; y < ny; ++y)
+                       for (int x = 0; x < nc_; ++x)
+                         out[(size_t(x / kColumnBlock) * ny + y) * kColumnBlock + x % kColumnBlock] =
+                             T(s[size_t(y) * nc_ + x][0]);
+                   });
     std::lock_guard<std::mutex> lock(fftw_planner_mutex());
     data_ = F::complex(size_t(ny) * stride_);
+    prefer_huge_pages(data_, sizeof(F::Complex) * size_t(ny) * stride_);
     T* row = F::real(size_t(nx));
     F::Complex* spectrum_row = F::complex(size_t(nc_));
     forward_row_ = F::r2c(nx, row, spectrum_row);

@@ -20,7 +20,14 @@ namespace {
 
 constexpr int kWarmUp = 6;
 
-test::AllocationCount steady_state(const pipeline::BenchScene& scene, const std::string& preset) {
+// The allocator's count, and the pool's blocks taken from the system (its
+// blocks of 2 MiB or more are mapped, unseen by malloc) over the same frames.
+struct SteadyState {
+  test::AllocationCount malloc;
+  unsigned long pool_blocks = 0;
+};
+
+SteadyState steady_state(const pipeline::BenchScene& scene, const std::string& preset) {
   pipeline::Settings settings;
   pipeline::apply_quality_preset(preset, settings);
   settings.skip = false;  // every stage every frame
@@ -29,12 +36,19 @@ test::AllocationCount steady_state(const pipeline::BenchScene& scene, const std:
                                        scene.gaze, scene.info.width / 2.0, scene.info.height / 2.0));
   const pipeline::Plan& plan = detail::EyeAccess::plan(eye);
   cv::Mat code;
+  unsigned long pool_before = 0;
   for (size_t i = 0; i < scene.frames.size(); ++i) {
-    if (i == kWarmUp) test::start_counting_allocations();
+    if (i == kWarmUp) {
+      pool_before = pipeline::frame_buffers_from_system();
+      test::start_counting_allocations();
+    }
     io::DisplayFrame out = detail::EyeAccess::process(eye, scene.frames[i], scene.ends_s[i]);
     retina::encode_display(out.linear, 8, scene.frames[i].index, plan.encoding, code);
   }
-  return test::stop_counting_allocations();
+  SteadyState s;
+  s.malloc = test::stop_counting_allocations();
+  s.pool_blocks = pipeline::frame_buffers_from_system() - pool_before;
+  return s;
 }
 
 TEST(SteadyStateAllocation, TheFrameLoopTakesNoImageSizedBlockFromTheSystem) {
@@ -43,11 +57,14 @@ TEST(SteadyStateAllocation, TheFrameLoopTakesNoImageSizedBlockFromTheSystem) {
   const pipeline::BenchScene scene = pipeline::load_bench_scene("night-city", 960, 540, frames);
   ASSERT_EQ(scene.frames.size(), size_t(frames));
   for (const char* preset : {"fast", "balanced", "reference"}) {
-    const test::AllocationCount c = steady_state(scene, preset);
+    const SteadyState s = steady_state(scene, preset);
+    const test::AllocationCount& c = s.malloc;
     const double per_frame = double(c.calls) / (frames - kWarmUp);
-    std::printf("%s: %lld allocations in %d frames (%.1f a frame, %lld bytes in all, largest %zu, %lld large)\n",
-                preset, c.calls, frames - kWarmUp, per_frame, c.bytes, c.largest, c.large_calls);
+    std::printf("%s: %lld allocations in %d frames (%.1f a frame, %lld bytes in all, largest %zu, %lld large), "
+                "%lu pooled blocks from the system\n",
+                preset, c.calls, frames - kWarmUp, per_frame, c.bytes, c.largest, c.large_calls, s.pool_blocks);
     EXPECT_EQ(c.large_calls, 0) << preset << ": largest " << c.largest << " bytes";
+    EXPECT_EQ(s.pool_blocks, 0ul) << preset;
   }
 }
 
