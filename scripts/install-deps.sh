@@ -10,6 +10,7 @@ packages=(
   libtiff-dev  # float TIFF stills (half floats, alpha), which OpenCV's reader refuses
   libavformat-dev libavcodec-dev libavutil-dev libswscale-dev
   libeigen3-dev libfftw3-dev
+  libdeflate-dev  # inflates OpenEXR's ZIP blocks ten times faster than zlib (io/zlib_uncompress.cpp)
   libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   zlib1g-dev  # the tests check PNG chunk CRCs with zlib (an independent CRC-32)

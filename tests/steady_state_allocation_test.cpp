@@ -1,9 +1,10 @@
 // What the steady-state frame loop asks of the allocator: the eye's frame
 // (every stage running: the night city, lights above the display peak and
 // a wandering gaze) and its display encoding, after a few frames have
-// warmed the loop up, counted by replacing malloc (counting_malloc.hpp).
-// No image-sized block may come from the system once the loop runs; small
-// blocks are counted and bounded.
+// warmed the loop up, counted by replacing malloc (counting_malloc.hpp)
+// and by the image pool (which maps its blocks of 2 MiB or more itself,
+// unseen by malloc). No image-sized block may come from the system once
+// the loop runs; small blocks are counted and bounded.
 #include <gtest/gtest.h>
 
 #include <cstdio>

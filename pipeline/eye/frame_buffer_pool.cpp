@@ -22,11 +22,21 @@ constexpr size_t kAlignment = 64;          // as OpenCV's own allocator
 // marked for transparent huge pages: the set-up touches hundreds of MB of
 // new buffers, and a fault per 4 KiB page cost a third of a one-frame
 // 1080p run's CPU (180 000 faults in `balanced`). Where the system gives
-// no huge pages (THP off, or not Linux) they are ordinary mappings.
+// no huge pages (THP off, or not Linux) they are ordinary mappings. 2 MiB
+// is x86-64's huge page (the machines eyestream is built and measured on);
+// elsewhere the advice may simply find no whole huge page to act on.
 constexpr size_t kHugePage = size_t(2) << 20;
-// Under AddressSanitizer every block comes from malloc, which it watches.
+// Under AddressSanitizer every block comes from malloc, which it watches
+// (gcc says so with __SANITIZE_ADDRESS__, clang before 17 only through
+// __has_feature).
 #if defined(__SANITIZE_ADDRESS__)
 constexpr bool kMapHuge = false;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kMapHuge = false;
+#else
+constexpr bool kMapHuge = true;
+#endif
 #else
 constexpr bool kMapHuge = true;
 #endif
@@ -51,8 +61,9 @@ size_t size_step(size_t bytes) {
 // one huge page longer, its unaligned head and its tail unmapped, the rest
 // marked for huge pages. A huge page is taken whole when first touched, so
 // the part of a block's last huge page beyond what a frame writes costs
-// memory too: 10 MiB more peak in `balanced` at 1080p (about 1 %); marking
-// only the whole huge pages inside each request kept the peak but took
+// memory too: about 10 MiB of `balanced`'s 1080p peak (which the FFT
+// engine's kernel spectra, written in place since, gave back). Marking
+// only the whole huge pages inside each request kept that memory but took
 // twice the faults (36 000 against 18 000 in a one-frame run).
 void* map_huge(size_t bytes) {
   void* p = mmap(nullptr, bytes + kHugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
@@ -96,8 +107,9 @@ class FrameBufferPool final : public cv::MatAllocator {
       }
       total *= size_t(sizes[i]);
     }
+    uchar* data = data0 ? static_cast<uchar*>(data0) : take(total);  // before the record: nothing to leak if it throws
     auto* u = new cv::UMatData(this);
-    u->data = u->origdata = data0 ? static_cast<uchar*>(data0) : take(total);
+    u->data = u->origdata = data;
     u->size = total;
     if (data0) u->flags |= cv::UMatData::USER_ALLOCATED;
     return u;
@@ -134,12 +146,17 @@ class FrameBufferPool final : public cv::MatAllocator {
         pooled_ -= bytes;
         return static_cast<uchar*>(p);
       }
+    }
+    void* p = nullptr;
+    if (kMapHuge && bytes >= kHugePage) {
+      p = map_huge(bytes);  // a size step, as give_back() sees it
+    } else if (posix_memalign(&p, kAlignment, bytes == 0 ? kAlignment : bytes) != 0) {
+      throw std::bad_alloc();
+    }
+    if (bytes >= kPooledFrom) {
+      std::lock_guard<std::mutex> lock(mutex_);
       ++from_system_;
     }
-    if (kMapHuge && bytes >= kHugePage)
-      return static_cast<uchar*>(map_huge(bytes));  // a size step, as give_back() sees it
-    void* p = nullptr;
-    if (posix_memalign(&p, kAlignment, bytes == 0 ? kAlignment : bytes) != 0) throw std::bad_alloc();
     return static_cast<uchar*>(p);
   }
 
