@@ -21,11 +21,11 @@ namespace {
 
 constexpr int kWarmUp = 6;
 
-// The allocator's count, and the pool's blocks taken from the system (its
-// blocks of 2 MiB or more are mapped, unseen by malloc) over the same frames.
+// The allocator's count, and the blocks the pool maps itself (2 MiB or
+// more, unseen by malloc), over the same frames.
 struct SteadyState {
   test::AllocationCount malloc;
-  unsigned long pool_blocks = 0;
+  unsigned long mapped_blocks = 0;
 };
 
 SteadyState steady_state(const pipeline::BenchScene& scene, const std::string& preset) {
@@ -37,10 +37,10 @@ SteadyState steady_state(const pipeline::BenchScene& scene, const std::string& p
                                        scene.gaze, scene.info.width / 2.0, scene.info.height / 2.0));
   const pipeline::Plan& plan = detail::EyeAccess::plan(eye);
   cv::Mat code;
-  unsigned long pool_before = 0;
+  unsigned long mapped_before = 0;
   for (size_t i = 0; i < scene.frames.size(); ++i) {
     if (i == kWarmUp) {
-      pool_before = pipeline::frame_buffers_from_system();
+      mapped_before = pipeline::frame_buffers_mapped();
       test::start_counting_allocations();
     }
     io::DisplayFrame out = detail::EyeAccess::process(eye, scene.frames[i], scene.ends_s[i]);
@@ -48,7 +48,7 @@ SteadyState steady_state(const pipeline::BenchScene& scene, const std::string& p
   }
   SteadyState s;
   s.malloc = test::stop_counting_allocations();
-  s.pool_blocks = pipeline::frame_buffers_from_system() - pool_before;
+  s.mapped_blocks = pipeline::frame_buffers_mapped() - mapped_before;
   return s;
 }
 
@@ -62,10 +62,10 @@ TEST(SteadyStateAllocation, TheFrameLoopTakesNoImageSizedBlockFromTheSystem) {
     const test::AllocationCount& c = s.malloc;
     const double per_frame = double(c.calls) / (frames - kWarmUp);
     std::printf("%s: %lld allocations in %d frames (%.1f a frame, %lld bytes in all, largest %zu, %lld large), "
-                "%lu pooled blocks from the system\n",
-                preset, c.calls, frames - kWarmUp, per_frame, c.bytes, c.largest, c.large_calls, s.pool_blocks);
+                "%lu blocks mapped by the pool\n",
+                preset, c.calls, frames - kWarmUp, per_frame, c.bytes, c.largest, c.large_calls, s.mapped_blocks);
     EXPECT_EQ(c.large_calls, 0) << preset << ": largest " << c.largest << " bytes";
-    EXPECT_EQ(s.pool_blocks, 0ul) << preset;
+    EXPECT_EQ(s.mapped_blocks, 0ul) << preset;
   }
 }
 

@@ -129,9 +129,9 @@ class FrameBufferPool final : public cv::MatAllocator {
     return pooled_;
   }
 
-  unsigned long from_system() const {
+  unsigned long mapped() const {
     std::lock_guard<std::mutex> lock(mutex_);
-    return from_system_;
+    return mapped_;
   }
 
  private:
@@ -147,16 +147,14 @@ class FrameBufferPool final : public cv::MatAllocator {
         return static_cast<uchar*>(p);
       }
     }
-    void* p = nullptr;
     if (kMapHuge && bytes >= kHugePage) {
-      p = map_huge(bytes);  // a size step, as give_back() sees it
-    } else if (posix_memalign(&p, kAlignment, bytes == 0 ? kAlignment : bytes) != 0) {
-      throw std::bad_alloc();
-    }
-    if (bytes >= kPooledFrom) {
+      void* p = map_huge(bytes);  // a size step, as give_back() sees it
       std::lock_guard<std::mutex> lock(mutex_);
-      ++from_system_;
+      ++mapped_;
+      return static_cast<uchar*>(p);
     }
+    void* p = nullptr;
+    if (posix_memalign(&p, kAlignment, bytes == 0 ? kAlignment : bytes) != 0) throw std::bad_alloc();
     return static_cast<uchar*>(p);
   }
 
@@ -202,7 +200,7 @@ class FrameBufferPool final : public cv::MatAllocator {
   mutable std::map<size_t, std::vector<Idle>> free_;
   mutable unsigned long generation_ = 0;  // trims so far
   mutable size_t pooled_ = 0;
-  mutable unsigned long from_system_ = 0;  // poolable blocks the pool had none of
+  mutable unsigned long mapped_ = 0;  // blocks mapped by map_huge() so far
 };
 
 // Never destroyed: Mats released during static destruction still find it.
@@ -220,7 +218,7 @@ void reuse_frame_buffers() {
 
 size_t pooled_frame_buffer_bytes() { return pool().pooled(); }
 
-unsigned long frame_buffers_from_system() { return pool().from_system(); }
+unsigned long frame_buffers_mapped() { return pool().mapped(); }
 
 void trim_frame_buffers() { pool().trim(kIdleTrims); }
 

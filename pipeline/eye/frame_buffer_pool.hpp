@@ -32,9 +32,8 @@ void release_frame_buffers();
 // Bytes held for reuse now (for tests and the bench).
 size_t pooled_frame_buffer_bytes();
 
-// Blocks of 64 KiB or more the pool has taken from the system so far, as
-// it had none of their size step (for tests: blocks of a huge page or more
-// are mapped directly, where counting malloc would not see them).
-unsigned long frame_buffers_from_system();
+// Blocks of 2 MiB or more the pool has mapped from the system itself so
+// far (for tests: counting malloc sees every other block it takes).
+unsigned long frame_buffers_mapped();
 
 }  // namespace eyestream::pipeline
