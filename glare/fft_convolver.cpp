@@ -106,7 +106,7 @@ int fft_size(int minimum) {
 
 struct FftConvolver::Engine {
   virtual ~Engine() = default;
-  virtual void convolve(const cv::Mat& rgb, const PsfWeights& w, cv::Mat& out) const = 0;
+  virtual void convolve(const cv::Mat& rgb, const ChannelWeights& w, cv::Mat& out) const = 0;
   int nx = 0, ny = 0;
 };
 
@@ -175,11 +175,11 @@ class RowColumnEngine final : public FftConvolver::Engine {
     F::free(data_);
   }
 
-  void convolve(const cv::Mat& rgb, const PsfWeights& w, cv::Mat& out) const override {
+  void convolve(const cv::Mat& rgb, const ChannelWeights& w, cv::Mat& out) const override {
     CV_Assert(rgb.type() == CV_32FC3 && rgb.cols == width_ && rgb.rows == height_);
     out.create(rgb.size(), CV_32FC3);
     // One channel after the other through one spectrum's memory.
-    for (int c = 0; c < 3; ++c) convolve_channel(rgb, w, c, out);
+    for (int c = 0; c < 3; ++c) convolve_channel(rgb, w[size_t(c)], c, out);
   }
 
  private:
@@ -267,7 +267,7 @@ FftConvolver::FftConvolver(const ComponentKernels& k, int width, int height)
 
 FftConvolver::~FftConvolver() = default;
 
-void FftConvolver::convolve(const cv::Mat& rgb, const PsfWeights& w, cv::Mat& out) const {
+void FftConvolver::convolve(const cv::Mat& rgb, const ChannelWeights& w, cv::Mat& out) const {
   engine_->convolve(rgb, w, out);
 }
 

@@ -14,6 +14,7 @@
 #include <opencv2/core.hpp>
 
 #include "glare/psf_kernel.hpp"
+#include "glare/psf_weights.hpp"
 
 namespace eyestream::glare {
 
@@ -34,8 +35,17 @@ class FftConvolver {
   // Negative rounding residue is set to 0. Rows and columns are
   // transformed in fixed blocks by fixed plans (FFTW_ESTIMATE), shared out
   // among threads, so results do not depend on the thread count or timing.
-  void convolve(const cv::Mat& rgb, const PsfWeights& w, cv::Mat& out) const;
+  void convolve(const cv::Mat& rgb, const PsfWeights& w, cv::Mat& out) const {
+    convolve(rgb, same_in_every_channel(w), out);
+  }
   cv::Mat convolve(const cv::Mat& rgb, const PsfWeights& w) const {
+    cv::Mat out;
+    convolve(rgb, w, out);
+    return out;
+  }
+  // The same with each channel's own weights.
+  void convolve(const cv::Mat& rgb, const ChannelWeights& w, cv::Mat& out) const;
+  cv::Mat convolve(const cv::Mat& rgb, const ChannelWeights& w) const {
     cv::Mat out;
     convolve(rgb, w, out);
     return out;

@@ -2,6 +2,8 @@
 // level (Spencer et al. 1995 eqs. 9-10).
 #pragma once
 
+#include <array>
+
 #include "glare/viewer.hpp"
 
 namespace eyestream::glare {
@@ -9,6 +11,13 @@ namespace eyestream::glare {
 struct PsfWeights {
   double core = 0, inner = 0, outer = 0, halo = 0;  // weights of f0, f1, f2, f3; they sum to 1
 };
+
+// Weights for each channel of an image (R, G, B): the engines take one set
+// for all three, or one each (the glare stage's set-up spreads the core,
+// inner and outer components in one pass, one per channel).
+using ChannelWeights = std::array<PsfWeights, 3>;
+
+inline ChannelWeights same_in_every_channel(const PsfWeights& w) { return {w, w, w}; }
 
 // Photopic, mesopic and scotopic weights (Spencer et al. 1995 eq. 9):
 //   Pp = 0.384 f0 + 0.478 f1 + 0.138 f2

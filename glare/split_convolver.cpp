@@ -126,14 +126,14 @@ SplitConvolver::SplitConvolver(int width, int height, double ppd, int factor, co
 
 SplitConvolver::~SplitConvolver() = default;
 
-cv::Mat SplitConvolver::convolve(const cv::Mat& rgb, const PsfWeights& w) const {
+cv::Mat SplitConvolver::convolve(const cv::Mat& rgb, const ChannelWeights& w) const {
   CV_Assert(rgb.cols == width_ && rgb.rows == height_ && rgb.type() == CV_32FC3);
   cv::Mat out = spread_near(rgb, w);
   add_coarse(rgb, w, out);
   return out;
 }
 
-cv::Mat SplitConvolver::spread_near(const cv::Mat& rgb, const PsfWeights& w) const {
+cv::Mat SplitConvolver::spread_near(const cv::Mat& rgb, const ChannelWeights& w) const {
   // Dense (the whole image, or many lights): by FFT, padded by R only;
   // decided as soon as the sources' direct cost exceeds the FFT's.
   const int r = radius_, side = 2 * r + 1;
@@ -151,7 +151,7 @@ cv::Mat SplitConvolver::spread_near(const cv::Mat& rgb, const PsfWeights& w) con
   }
   out = cv::Mat::zeros(rgb.size(), CV_32FC3);
   cv::Mat kernel[3];
-  for (int c = 0; c < 3; ++c) combined_kernel(near_, w, c).convertTo(kernel[c], CV_32F);
+  for (int c = 0; c < 3; ++c) combined_kernel(near_, w[size_t(c)], c).convertTo(kernel[c], CV_32F);
   // Sparse: each output row gathers the sources within R rows, in order,
   // so the sums do not depend on how rows are split among threads.
   cv::parallel_for_(cv::Range(0, rgb.rows), [&](const cv::Range& rows) {
@@ -173,7 +173,7 @@ cv::Mat SplitConvolver::spread_near(const cv::Mat& rgb, const PsfWeights& w) con
   return out;
 }
 
-void SplitConvolver::add_coarse(const cv::Mat& rgb, const PsfWeights& w, cv::Mat& out) const {
+void SplitConvolver::add_coarse(const cv::Mat& rgb, const ChannelWeights& w, cv::Mat& out) const {
   const Level& middle = coarse_[0];
   const Level& tail = coarse_[1];
   // Block sums of the input at each level (zero-padded to whole tail blocks).

@@ -41,7 +41,8 @@ class SplitConvolver {
   ~SplitConvolver();
 
   // As FftConvolver::convolve.
-  cv::Mat convolve(const cv::Mat& rgb, const PsfWeights& w) const;
+  cv::Mat convolve(const cv::Mat& rgb, const PsfWeights& w) const { return convolve(rgb, same_in_every_channel(w)); }
+  cv::Mat convolve(const cv::Mat& rgb, const ChannelWeights& w) const;
 
   int factor() const { return factor_; }
   int near_radius() const { return radius_; }
@@ -52,10 +53,10 @@ class SplitConvolver {
     cv::Size size;           // the frame at this level, padded to whole coarsest blocks
     std::unique_ptr<FftConvolver> engine;
   };
-  cv::Mat spread_near(const cv::Mat& rgb, const PsfWeights& w) const;
+  cv::Mat spread_near(const cv::Mat& rgb, const ChannelWeights& w) const;
   // Adds the coarse levels' spread light to `out` (the near part), and
   // sets what rounding left negative to 0.
-  void add_coarse(const cv::Mat& rgb, const PsfWeights& w, cv::Mat& out) const;
+  void add_coarse(const cv::Mat& rgb, const ChannelWeights& w, cv::Mat& out) const;
 
   int width_, height_, factor_, radius_;
   ComponentKernels near_;  // windowed, (2R+1) x (2R+1)

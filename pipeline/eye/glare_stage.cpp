@@ -67,7 +67,7 @@ GlareStage::GlareStage(const Plan& plan)
     const double centre = g.at<double>(g.rows / 2) * g.at<double>(g.rows / 2);
     for (cv::Vec3d& c : centre_) c = cv::Vec3d::all(centre);
     if (plan.glare.full)
-      in_frame_.push_back(in_frame_share(cv::Mat(plan.height, plan.width, CV_32FC3, cv::Scalar::all(1.0)), {}));
+      in_frame_.push_back(in_frame_share(cv::Mat(plan.height, plan.width, CV_32FC3, cv::Scalar::all(1.0)), {}));  // weights unused
     return;
   }
   if (plan.glare.wave_lines) wave_ = std::make_unique<glare::WaveLines>(optics_, plan.pixels_per_degree);
@@ -105,12 +105,18 @@ GlareStage::GlareStage(const Plan& plan)
   if (!plan.glare.full) return;
   // The in-frame share of each component, by the engine itself, so that a
   // uniform scene and surround come out uniform to the engine's rounding.
+  // The core, inner and outer components are the same in every channel
+  // (only the halo's rings are coloured), so one pass spreads all three,
+  // one per channel, each channel computed as it would be alone.
   const cv::Mat ones(plan.height, plan.width, CV_32FC3, cv::Scalar::all(1.0));
-  for (int c = 0; c < 4; ++c) {
-    glare::PsfWeights w;
-    (c == 0 ? w.core : c == 1 ? w.inner : c == 2 ? w.outer : w.halo) = 1.0;
-    in_frame_.push_back(one_channel_if_grey(in_frame_share(ones, w)));
-  }
+  glare::ChannelWeights grey;
+  grey[0].core = grey[1].inner = grey[2].outer = 1.0;
+  std::vector<cv::Mat> shares;
+  cv::split(in_frame_share(ones, grey), shares);
+  for (const cv::Mat& share : shares) in_frame_.push_back(share);
+  glare::PsfWeights halo;
+  halo.halo = 1.0;
+  in_frame_.push_back(one_channel_if_grey(in_frame_share(ones, glare::same_in_every_channel(halo))));
 }
 
 cv::Mat GlareStage::one_channel_if_grey(const cv::Mat& map) {
@@ -150,16 +156,16 @@ cv::Vec3f GlareStage::kept_share(const glare::PsfWeights& w) const {
   return plan_.glare.gaussian ? cv::Vec3f::all(float(centre_[0][0])) : cv::Vec3f(float(k[0]), float(k[1]), float(k[2]));
 }
 
-cv::Mat GlareStage::in_frame_share(const cv::Mat& ones, const glare::PsfWeights& w) const {
+cv::Mat GlareStage::in_frame_share(const cv::Mat& ones, const glare::ChannelWeights& w) const {
   return plane_->identity() ? spread_plane(ones, w) : moved_light(ones, w);
 }
 
-cv::Mat GlareStage::moved_light(const cv::Mat& rgb, const glare::PsfWeights& w) const {
+cv::Mat GlareStage::moved_light(const cv::Mat& rgb, const glare::ChannelWeights& w) const {
   const FrameProjection& p = *plane_;
   const cv::Mat flux = p.to_plane_flux(to_glare_frame(rgb));
   cv::Mat scattered = spread_plane(flux, w);
-  if (plan_.glare.gaussian) {  // a blur keeps its centre: take it out
-    const cv::Vec3f kept = kept_share(w);
+  if (plan_.glare.gaussian) {  // a blur keeps its centre: take it out (the same share whatever the weights)
+    const cv::Vec3f kept = kept_share(w[0]);
     cv::Mat centre;
     cv::multiply(flux, cv::Scalar(kept[0], kept[1], kept[2]), centre);
     scattered -= centre;
@@ -170,7 +176,7 @@ cv::Mat GlareStage::moved_light(const cv::Mat& rgb, const glare::PsfWeights& w) 
 
 cv::Mat GlareStage::spread(const cv::Mat& rgb, const glare::PsfWeights& w, double surround) const {
   if (plane_->identity()) {
-    cv::Mat out = spread_plane(rgb, w);
+    cv::Mat out = spread_plane(rgb, glare::same_in_every_channel(w));
     add_surround(out, w, surround);
     return out;
   }
@@ -178,7 +184,7 @@ cv::Mat GlareStage::spread(const cv::Mat& rgb, const glare::PsfWeights& w, doubl
   // keeps there stays on the frame's pixels, sharp. The moved light (and
   // the surround's, which is as smooth) comes back to the frame's size in
   // the same sweep that adds the kept light.
-  cv::Mat moved = moved_light(rgb, w);
+  cv::Mat moved = moved_light(rgb, glare::same_in_every_channel(w));
   add_surround(moved, w, surround);
   const cv::Vec3f kept = kept_share(w);
   if (moved.size() == rgb.size()) {
@@ -207,7 +213,7 @@ cv::Mat GlareStage::spread(const cv::Mat& rgb, const glare::PsfWeights& w, doubl
   return out;
 }
 
-cv::Mat GlareStage::spread_plane(const cv::Mat& rgb, const glare::PsfWeights& w) const {
+cv::Mat GlareStage::spread_plane(const cv::Mat& rgb, const glare::ChannelWeights& w) const {
   if (plan_.glare.gaussian) {
     // Yoshida et al. 2008: a Gaussian of sigma 0.34 deg; light leaving the frame is lost.
     const double sigma = plan_.glare.gaussian_sigma_deg * ppd_;

@@ -64,12 +64,13 @@ class GlareStage {
   cv::Mat spread(const cv::Mat& rgb, const glare::PsfWeights& w, double surround_cd_m2 = 0.0) const;
   // Off the frame's own plane: the light the PSF moves out of its pixel,
   // on the glare frame's pixels (the halved frame's, or the frame's).
-  cv::Mat moved_light(const cv::Mat& rgb, const glare::PsfWeights& w) const;
+  cv::Mat moved_light(const cv::Mat& rgb, const glare::ChannelWeights& w) const;
   // What in_frame_ holds for a component: spread (the frame's own plane)
-  // or moved_light of a frame of ones.
-  cv::Mat in_frame_share(const cv::Mat& ones, const glare::PsfWeights& w) const;
+  // or moved_light of a frame of ones (each channel with its own weights:
+  // a component per channel).
+  cv::Mat in_frame_share(const cv::Mat& ones, const glare::ChannelWeights& w) const;
   // The convolution on the angle plane.
-  cv::Mat spread_plane(const cv::Mat& plane, const glare::PsfWeights& w) const;
+  cv::Mat spread_plane(const cv::Mat& plane, const glare::ChannelWeights& w) const;
   // Per channel, the share of a pixel's light the PSF of weights `w` keeps
   // in that pixel.
   cv::Vec3f kept_share(const glare::PsfWeights& w) const;
