@@ -6,11 +6,14 @@
 // whole buffers, inflates the same blocks in 2 ms (docs/performance.md).
 // The OpenEXR libraries ask for `uncompress` without a symbol version, so
 // the program's own definition, exported (CMakeLists.txt), is the one the
-// dynamic linker binds them to. It keeps zlib's contract: the same bytes,
-// *dest_length set to their count, Z_OK; Z_BUF_ERROR when `dest` is too
-// small; Z_DATA_ERROR for corrupt or incomplete data; Z_MEM_ERROR when no
-// decompressor can be made. tests/zlib_uncompress_test.cpp holds it to
-// zlib's own function on the same inputs.
+// dynamic linker binds them to. It keeps zlib's contract where callers
+// rely on it: the same bytes, *dest_length set to their count, Z_OK;
+// Z_BUF_ERROR when `dest` is too small; Z_DATA_ERROR for corrupt or
+// incomplete data; Z_MEM_ERROR when no decompressor can be made. On an
+// error *dest_length is 0 (zlib gives the count of the bytes it wrote
+// before the error; no caller here reads them).
+// tests/zlib_uncompress_test.cpp holds it to zlib's own function on
+// zlib's streams at three levels and on four kinds of fault.
 #include <libdeflate.h>
 #include <zlib.h>
 
@@ -23,16 +26,21 @@ struct FreeDecompressor {
 };
 
 // One per thread: OpenEXR inflates blocks on its pool's threads at once.
-libdeflate_decompressor* thread_decompressor() {
-  thread_local std::unique_ptr<libdeflate_decompressor, FreeDecompressor> d(libdeflate_alloc_decompressor());
+// Made on first use, and again after a failure to make it.
+libdeflate_decompressor* thread_decompressor() noexcept {
+  thread_local std::unique_ptr<libdeflate_decompressor, FreeDecompressor> d;
+  if (!d) d.reset(libdeflate_alloc_decompressor());
   return d.get();
 }
 
 }  // namespace
 
-extern "C" int uncompress(Bytef* dest, uLongf* dest_length, const Bytef* source, uLong source_length) {
+extern "C" int uncompress(Bytef* dest, uLongf* dest_length, const Bytef* source, uLong source_length) noexcept {
   libdeflate_decompressor* d = thread_decompressor();
-  if (!d) return Z_MEM_ERROR;
+  if (!d) {
+    *dest_length = 0;
+    return Z_MEM_ERROR;
+  }
   size_t in_used = 0, out_used = 0;
   // Data after the stream's end is ignored, as zlib does.
   const libdeflate_result r =
@@ -42,8 +50,10 @@ extern "C" int uncompress(Bytef* dest, uLongf* dest_length, const Bytef* source,
       *dest_length = uLongf(out_used);
       return Z_OK;
     case LIBDEFLATE_INSUFFICIENT_SPACE:
+      *dest_length = 0;
       return Z_BUF_ERROR;
     default:
+      *dest_length = 0;
       return Z_DATA_ERROR;
   }
 }

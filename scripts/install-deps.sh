@@ -13,7 +13,7 @@ packages=(
   libdeflate-dev  # inflates OpenEXR's ZIP blocks ten times faster than zlib (io/zlib_uncompress.cpp)
   libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  zlib1g-dev  # the tests check PNG chunk CRCs with zlib (an independent CRC-32)
+  zlib1g-dev  # uncompress's declaration (io/zlib_uncompress.cpp); the tests check PNG chunk CRCs with zlib (an independent CRC-32)
   python3-dev pybind11-dev python3-numpy  # the Python module (python/) and its tests
   ffmpeg  # the tests cross-check HDR video luminance with its zscale filter (zimg), an independent decoder
 )

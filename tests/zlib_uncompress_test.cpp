@@ -91,7 +91,7 @@ TEST(ZlibUncompress, AgreesWithZlibOnEveryStreamAndEveryFault) {
           std::vector<Bytef> cut(z.begin(), z.begin() + long(z.size() / 2));
           expect_same(cut, data->size(), "cut in half" + of, data->size() > 1);
           std::vector<Bytef> bad = z;
-          bad[0] ^= 0x40;  // the header's compression method
+          bad[0] ^= 0x40;  // the header's window size: its check bits fail
           expect_same(bad, data->size(), "bad header" + of);
           std::vector<Bytef> flipped = z;
           flipped[z.size() - 1] ^= 0x01;  // the Adler-32 check

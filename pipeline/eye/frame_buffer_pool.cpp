@@ -107,8 +107,14 @@ class FrameBufferPool final : public cv::MatAllocator {
       }
       total *= size_t(sizes[i]);
     }
-    uchar* data = data0 ? static_cast<uchar*>(data0) : take(total);  // before the record: nothing to leak if it throws
-    auto* u = new cv::UMatData(this);
+    uchar* data = data0 ? static_cast<uchar*>(data0) : take(total);
+    cv::UMatData* u = nullptr;
+    try {
+      u = new cv::UMatData(this);
+    } catch (...) {
+      if (!data0) give_back(data, total);
+      throw;
+    }
     u->data = u->origdata = data;
     u->size = total;
     if (data0) u->flags |= cv::UMatData::USER_ALLOCATED;

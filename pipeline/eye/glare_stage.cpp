@@ -120,9 +120,10 @@ GlareStage::GlareStage(const Plan& plan)
 }
 
 cv::Mat GlareStage::one_channel_if_grey(const cv::Mat& map) {
-  // The core and the scatter are the same in every channel (only the
-  // halo's rings are coloured): one channel holds them, a third of the
-  // memory and of the reads.
+  // The halo's share is coloured where its rings reach the frame's edge,
+  // else the same in every channel: then one channel holds it, a third of
+  // the memory and of the reads (the core, inner and outer shares are
+  // grey by construction: the constructor keeps one channel of each).
   std::vector<cv::Mat> channels;
   cv::split(map, channels);
   const bool grey = cv::norm(channels[0], channels[1], cv::NORM_INF) == 0.0 &&
