@@ -35,7 +35,7 @@ libdeflate_decompressor* thread_decompressor() noexcept {
 
 }  // namespace
 
-extern "C" int uncompress(Bytef* dest, uLongf* dest_length, const Bytef* source, uLong source_length) noexcept {
+extern "C" int uncompress(Bytef* dest, uLongf* dest_length, const Bytef* source, uLong source_length) {
   libdeflate_decompressor* d = thread_decompressor();
   if (!d) {
     *dest_length = 0;
