@@ -1,5 +1,7 @@
 #include "pipeline/eye/frame_buffer_pool.hpp"
 
+#include "glare/huge_pages.hpp"
+
 #include <sys/mman.h>
 #include <unistd.h>
 
@@ -74,9 +76,7 @@ void* map_huge(size_t bytes) {
   const uintptr_t aligned_end = (aligned + bytes + page - 1) / page * page;
   if (aligned > start) munmap(p, aligned - start);
   if (end > aligned_end) munmap(reinterpret_cast<void*>(aligned_end), end - aligned_end);
-#ifdef MADV_HUGEPAGE
-  madvise(reinterpret_cast<void*>(aligned), bytes, MADV_HUGEPAGE);  // advice: no huge pages is no error
-#endif
+  glare::prefer_huge_pages(reinterpret_cast<void*>(aligned), bytes);  // the whole huge pages; the tail has none
   return reinterpret_cast<void*>(aligned);
 }
 
