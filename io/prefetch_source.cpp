@@ -6,6 +6,7 @@ PrefetchSource::PrefetchSource(std::unique_ptr<FrameSource> source, size_t depth
     : source_(std::move(source)), queue_(depth) {
   reader_ = std::thread([this] {
     for (;;) {
+      if (!queue_.wait_for_room()) return;  // nothing decoded is held while the queue is full
       Item item;
       try {
         item.frame = source_->next();
@@ -29,6 +30,13 @@ std::optional<SceneFrame> PrefetchSource::next() {
   if (!item || !item->frame) ended_ = true;
   if (item && item->error) std::rethrow_exception(item->error);
   return item ? std::move(item->frame) : std::nullopt;
+}
+
+std::optional<double> PrefetchSource::next_time() {
+  if (ended_) return std::nullopt;
+  const std::optional<std::optional<double>> time =
+      queue_.peek([](const Item& item) { return item.frame ? std::optional<double>(item.frame->time_s) : std::nullopt; });
+  return time ? *time : std::nullopt;
 }
 
 }  // namespace eyestream::io

@@ -15,12 +15,17 @@ namespace eyestream::io {
 
 class PrefetchSource : public FrameSource {
  public:
-  // Reads up to `depth` frames ahead.
+  // Holds up to `depth` decoded frames that next() has not returned: the
+  // reader decodes a frame only once there is room for it.
   PrefetchSource(std::unique_ptr<FrameSource> source, size_t depth = 2);
   ~PrefetchSource() override;
 
   const SourceInfo& info() const override { return source_->info(); }
   std::optional<SceneFrame> next() override;
+  // The time of the frame next() will return, waiting for it to be decoded
+  // but leaving it queued; nothing at the end, or when reading it failed
+  // (next() then throws the error).
+  std::optional<double> next_time();
 
  private:
   struct Item {

@@ -92,6 +92,7 @@ struct VideoWriter::Impl {
     codec->time_base = av_inv_q(rate);
     codec->framerate = rate;
     codec->gop_size = options.keyint;
+    if (options.b_frames >= 0) codec->max_b_frames = options.b_frames;  // after the preset (x264 and x265)
     tag(codec->color_primaries, codec->color_trc, codec->colorspace);
     codec->color_range = AVCOL_RANGE_MPEG;
     codec->thread_count = options.encoder_threads;

@@ -18,6 +18,7 @@ struct VideoOptions {
   double hdr10_peak_cd_m2 = 1000; // mastering display peak (and MaxCLL) for HDR10
   int crf = 18;                   // constant rate factor, 0 (lossless) .. 51
   int keyint = 250;               // longest distance between keyframes (1: every frame)
+  int b_frames = -1;              // most B-frames in a row; -1: the speed preset's
   std::string preset = "medium";  // encoder speed preset
   int encoder_threads = 2;        // fixed, so output bytes do not depend on --threads
   std::string stream_format = "mkv";  // container on standard output (path "-"): mkv or mp4 (fragmented)

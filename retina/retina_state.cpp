@@ -89,9 +89,11 @@ void step_sites(const cv::Mat& lms, const ToneCurve& curve, const PhotoreceptorP
 template <typename T>
 void afterimage_sites(const PhotoreceptorParams& p, double c_max, const AfterimageOptions& o, const cv::Mat& bleached,
                       const cv::Mat& deficit, const cv::Mat& bleached_rest, const cv::Mat& response,
-                      const cv::Mat& visibility, AfterimageMaps& maps) {
-  maps.gain_excess.create(bleached.size(), CV_32FC3);
-  maps.bleach.create(bleached.size(), CV_32FC3);
+                      const cv::Mat& visibility, AfterimageMaps& maps, bool with_maps) {
+  if (with_maps) {
+    maps.gain_excess.create(bleached.size(), CV_32FC3);
+    maps.bleach.create(bleached.size(), CV_32FC3);
+  }
   // alpha^j2 by table in float: 2e-7 relative (pow_table.hpp), far below
   // what a display shows of a gain.
   const PowTable& power = shared_pow_table(p.adaptation_strength);
@@ -104,8 +106,8 @@ void afterimage_sites(const PhotoreceptorParams& p, double c_max, const Afterima
       const Px<T>* b_inf = bleached_rest.ptr<Px<T>>(y);
       const Px<T>* r = response.ptr<Px<T>>(y);
       const float* visible = visibility.ptr<float>(y);
-      cv::Vec3f* gain = maps.gain_excess.ptr<cv::Vec3f>(y);
-      cv::Vec3f* bleach = maps.bleach.ptr<cv::Vec3f>(y);
+      cv::Vec3f* gain = with_maps ? maps.gain_excess.ptr<cv::Vec3f>(y) : nullptr;
+      cv::Vec3f* bleach = with_maps ? maps.bleach.ptr<cv::Vec3f>(y) : nullptr;
       for (int x = 0; x < bleached.cols; ++x)
         for (int c = 0; c < 3; ++c) {
           double g = 1.0, j = 0.0;
@@ -113,9 +115,9 @@ void afterimage_sites(const PhotoreceptorParams& p, double c_max, const Afterima
             g = power.any(float(local_gain<T>(d[x][c], r[x][c], T(c_max), T(p.gain_epsilon))));
           if (o.bleaching)  // Jacobs et al. 2015 eq. 12: j1 (C / C_max) max(B - B_inf, 0)
             j = p.bleaching_strength * (1.0 - double(d[x][c]) / c_max) * std::max(double(b[x][c] - b_inf[x][c]), 0.0);
-          gain[x][c] = float(visible[x] * (g - 1.0));
-          bleach[x][c] = float(visible[x] * j);
-          largest = std::max({largest, std::abs(gain[x][c]), std::abs(bleach[x][c])});
+          const float gain_xc = float(visible[x] * (g - 1.0)), bleach_xc = float(visible[x] * j);
+          if (with_maps) gain[x][c] = gain_xc, bleach[x][c] = bleach_xc;
+          largest = std::max({largest, std::abs(gain_xc), std::abs(bleach_xc)});
         }
       row_largest[size_t(y)] = largest;
     }
@@ -167,6 +169,15 @@ void RetinaState::soften(double variance_sites2) {
 
 AfterimageMaps RetinaState::afterimages(const AfterimageOptions& options, const cv::Mat& visibility,
                                         std::optional<cv::Rect> within) const {
+  return afterimage_sites_of(options, visibility, within, true);
+}
+
+float RetinaState::largest_afterimage(const AfterimageOptions& options, const cv::Mat& visibility) const {
+  return afterimage_sites_of(options, visibility, std::nullopt, false).largest;
+}
+
+AfterimageMaps RetinaState::afterimage_sites_of(const AfterimageOptions& options, const cv::Mat& visibility,
+                                                std::optional<cv::Rect> within, bool with_maps) const {
   CV_Assert(!response_.empty() && visibility.size() == bleached_.size() && visibility.type() == CV_32F);
   const cv::Rect grid(cv::Point(0, 0), bleached_.size());
   const cv::Rect region = within ? *within : grid;
@@ -174,10 +185,10 @@ AfterimageMaps RetinaState::afterimages(const AfterimageOptions& options, const 
   AfterimageMaps maps;
   if (is_double(bleached_))
     afterimage_sites<double>(params_, c_max_, options, bleached_(region), deficit_(region), bleached_rest_(region),
-                             response_(region), visibility(region), maps);
+                             response_(region), visibility(region), maps, with_maps);
   else
     afterimage_sites<float>(params_, c_max_, options, bleached_(region), deficit_(region), bleached_rest_(region),
-                            response_(region), visibility(region), maps);
+                            response_(region), visibility(region), maps, with_maps);
   return maps;
 }
 

@@ -57,6 +57,9 @@ class RetinaState {
   // (x - region.x, y - region.y)): the frame sees about a quarter of the grid.
   AfterimageMaps afterimages(const AfterimageOptions& options, const cv::Mat& visibility,
                              std::optional<cv::Rect> region = std::nullopt) const;
+  // afterimages(options, visibility).largest, without making the maps (two
+  // grid-sized images).
+  float largest_afterimage(const AfterimageOptions& options, const cv::Mat& visibility) const;
 
   const cv::Mat& bleached() const { return bleached_; }  // B, LMS
   const cv::Mat& deficit() const { return deficit_; }    // D = C_max - C, LMS
@@ -71,6 +74,8 @@ class RetinaState {
  private:
   PhotoreceptorParams params_;
   double c_max_;
+  AfterimageMaps afterimage_sites_of(const AfterimageOptions& options, const cv::Mat& visibility,
+                                    std::optional<cv::Rect> within, bool with_maps) const;
   cv::Mat bleached_, deficit_;
   cv::Mat bleached_rest_, response_;  // B_inf and R of the last stimulus
 };

@@ -232,7 +232,7 @@ bool RetinaStage::composite(const cv::Mat& tone_mapped, double gaze_x, double ga
 }
 
 bool RetinaStage::whole_grid_rests() const {
-  return state_.afterimages(plan_.retina.afterimages, visibility_).largest <= kRestTolerance;
+  return state_.largest_afterimage(plan_.retina.afterimages, visibility_) <= kRestTolerance;
 }
 
 std::vector<cv::Mat> RetinaStage::save(bool& started) const {

@@ -15,6 +15,7 @@ void apply_quality_preset(const std::string& name, Settings& s) {
     s.glare_resolution = 1.0;
     s.acuity.pyramid_from_px = 0.0;
     s.sink.video.preset = "medium";
+    s.sink.video.b_frames = -1;
   } else if (name == "balanced") {
     s.precision = "float";
     s.state_sites_per_pixel = 0.5;
@@ -25,6 +26,7 @@ void apply_quality_preset(const std::string& name, Settings& s) {
     s.glare_resolution = 1.0;
     s.acuity.pyramid_from_px = 6.0;
     s.sink.video.preset = "veryfast";  // docs/performance.md: 63 MB less memory and 22 ms less CPU a 1080p frame than faster
+    s.sink.video.b_frames = 0;         // docs/performance.md: x264 holds fewer frames
   } else if (name == "fast") {
     s.precision = "float";
     s.state_sites_per_pixel = 0.25;
@@ -34,7 +36,8 @@ void apply_quality_preset(const std::string& name, Settings& s) {
     s.glare_tail_factor = 4;
     s.glare_resolution = 0.5;
     s.acuity.pyramid_from_px = 1.5;
-    s.sink.video.preset = "ultrafast";  // docs/performance.md: 34 ms less CPU a 1080p frame than veryfast, PSNR 52 dB
+    s.sink.video.preset = "ultrafast";
+    s.sink.video.b_frames = -1;  // (ultrafast makes none)  // docs/performance.md: 34 ms less CPU a 1080p frame than veryfast, PSNR 52 dB
   } else {
     throw UsageError("--quality: '" + name + "' is not one of reference|balanced|fast");
   }

@@ -226,6 +226,10 @@ ParamSet run_parameters(Settings& s) {
                  {"mkv", "mp4"}));
   set.add(number("keyint", "frames", "longest distance between video keyframes (seeking, cutting)", out,
                  &s.sink.video.keyint, 1, 10000));
+  set.add(number("b-frames", "",
+                 "most B-frames in a row in a video; -1: the speed preset's (--quality balanced sets 0: x264 holds "
+                 "fewer frames)",
+                 out, &s.sink.video.b_frames, -1, 16));
   set.add(number("crf", "", "video constant rate factor (lower is better)", out, &s.sink.video.crf, 0, 51));
   set.add(choice("x264-preset", "video encoder speed preset (x264 and x265 names; --quality sets medium, veryfast or ultrafast)", out, &s.sink.video.preset,
                  {"ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow"}));
