@@ -7,7 +7,6 @@
 #include <deque>
 #include <mutex>
 #include <optional>
-#include <utility>
 
 namespace eyestream::io {
 
@@ -33,16 +32,6 @@ class BoundedQueue {
     std::unique_lock<std::mutex> lock(mutex_);
     changed_.wait(lock, [&] { return closed_ || items_.size() < capacity_; });
     return !closed_;
-  }
-
-  // Waits for an item and returns what `look` makes of the first one,
-  // which stays queued; nothing once the queue is closed and empty.
-  template <typename Look>
-  auto peek(Look look) -> std::optional<decltype(look(std::declval<const T&>()))> {
-    std::unique_lock<std::mutex> lock(mutex_);
-    changed_.wait(lock, [&] { return closed_ || !items_.empty(); });
-    if (items_.empty()) return std::nullopt;
-    return look(items_.front());
   }
 
   // Waits for an item; nothing once the queue is closed and empty.

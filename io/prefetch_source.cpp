@@ -32,11 +32,4 @@ std::optional<SceneFrame> PrefetchSource::next() {
   return item ? std::move(item->frame) : std::nullopt;
 }
 
-std::optional<double> PrefetchSource::next_time() {
-  if (ended_) return std::nullopt;
-  const std::optional<std::optional<double>> time =
-      queue_.peek([](const Item& item) { return item.frame ? std::optional<double>(item.frame->time_s) : std::nullopt; });
-  return time ? *time : std::nullopt;
-}
-
 }  // namespace eyestream::io

@@ -22,10 +22,6 @@ class PrefetchSource : public FrameSource {
 
   const SourceInfo& info() const override { return source_->info(); }
   std::optional<SceneFrame> next() override;
-  // The time of the frame next() will return, waiting for it to be decoded
-  // but leaving it queued; nothing at the end, or when reading it failed
-  // (next() then throws the error).
-  std::optional<double> next_time();
 
  private:
   struct Item {

@@ -116,7 +116,10 @@ void afterimage_sites(const PhotoreceptorParams& p, double c_max, const Afterima
           if (o.bleaching)  // Jacobs et al. 2015 eq. 12: j1 (C / C_max) max(B - B_inf, 0)
             j = p.bleaching_strength * (1.0 - double(d[x][c]) / c_max) * std::max(double(b[x][c] - b_inf[x][c]), 0.0);
           const float gain_xc = float(visible[x] * (g - 1.0)), bleach_xc = float(visible[x] * j);
-          if (with_maps) gain[x][c] = gain_xc, bleach[x][c] = bleach_xc;
+          if (with_maps) {
+            gain[x][c] = gain_xc;
+            bleach[x][c] = bleach_xc;
+          }
           largest = std::max({largest, std::abs(gain_xc), std::abs(bleach_xc)});
         }
       row_largest[size_t(y)] = largest;

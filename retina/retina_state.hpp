@@ -72,10 +72,11 @@ class RetinaState {
   void restore(const std::vector<cv::Mat>& mats);
 
  private:
-  PhotoreceptorParams params_;
-  double c_max_;
   AfterimageMaps afterimage_sites_of(const AfterimageOptions& options, const cv::Mat& visibility,
                                     std::optional<cv::Rect> within, bool with_maps) const;
+
+  PhotoreceptorParams params_;
+  double c_max_;
   cv::Mat bleached_, deficit_;
   cv::Mat bleached_rest_, response_;  // B_inf and R of the last stimulus
 };

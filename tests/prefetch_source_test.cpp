@@ -1,8 +1,8 @@
-// The prefetching reader: frames arrive in order with their times, the
-// next frame's time can be read without taking the frame, a frame that
-// fails to read is reported at that frame, and the reader decodes a frame
-// only when there is room for it, so it holds no more than `depth` frames
-// that next() has not returned (each a whole frame of memory at 1080p).
+// The prefetching reader: frames arrive in order with their times, a frame
+// that fails to read is reported at that frame, and the reader decodes a
+// frame only when there is room for it, so it holds no more than `depth`
+// frames that next() has not returned (each a whole frame of memory at
+// 1080p).
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -43,47 +43,45 @@ class CountingSource : public io::FrameSource {
   std::atomic<int>& made_;
 };
 
-// Gives the reader time to run ahead if it would.
-void let_the_reader_run() { std::this_thread::sleep_for(std::chrono::milliseconds(100)); }
+// Waits (up to 10 s) until the reader has made `count` frames, then gives
+// it time to run further ahead if it would; returns how many it made.
+int made_after_waiting_for(const std::atomic<int>& made, int count) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  while (made.load() < count && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  return made.load();
+}
 
 TEST(PrefetchSource, HoldsNoMoreThanItsDepthOfFramesNotYetReturned) {
   std::atomic<int> made{0};
   io::PrefetchSource source(std::make_unique<CountingSource>(10, -1, made), 1);
-  let_the_reader_run();
-  EXPECT_EQ(made.load(), 1) << "one frame queued, none decoded beyond it";
+  EXPECT_EQ(made_after_waiting_for(made, 1), 1) << "one frame queued, none decoded beyond it";
   const std::optional<io::SceneFrame> first = source.next();
   ASSERT_TRUE(first);
   EXPECT_EQ(first->index, 0);
-  let_the_reader_run();
-  EXPECT_EQ(made.load(), 2) << "frame 0 returned, frame 1 queued, frame 2 not read yet";
-  ASSERT_EQ(source.next_time(), std::optional<double>(0.1 * 1));
-  let_the_reader_run();
-  EXPECT_EQ(made.load(), 2) << "reading the next frame's time leaves the frame queued";
+  EXPECT_EQ(made_after_waiting_for(made, 2), 2) << "frame 0 returned, frame 1 queued, frame 2 not read yet";
 }
 
-TEST(PrefetchSource, GivesEveryFrameInOrderWithTheTimeNextTimeSaid) {
+TEST(PrefetchSource, GivesEveryFrameInOrderWithItsTime) {
   std::atomic<int> made{0};
   io::PrefetchSource source(std::make_unique<CountingSource>(6, -1, made), 1);
   for (int i = 0; i < 6; ++i) {
-    const std::optional<double> t = source.next_time();
-    ASSERT_TRUE(t);
     const std::optional<io::SceneFrame> f = source.next();
     ASSERT_TRUE(f);
     EXPECT_EQ(f->index, i);
-    EXPECT_DOUBLE_EQ(f->time_s, *t);
+    EXPECT_DOUBLE_EQ(f->time_s, 0.1 * i);
     EXPECT_EQ(f->rgb.at<cv::Vec3f>(1, 3)[2], float(i));
   }
-  EXPECT_FALSE(source.next_time());
   EXPECT_FALSE(source.next());
-  EXPECT_FALSE(source.next_time()) << "still nothing after the end";
+  EXPECT_FALSE(source.next()) << "still nothing after the end";
 }
 
-TEST(PrefetchSource, AFrameThatFailsHasNoTimeAndThrowsWhenTaken) {
+TEST(PrefetchSource, AFrameThatFailsThrowsWhenItIsTaken) {
   std::atomic<int> made{0};
   io::PrefetchSource source(std::make_unique<CountingSource>(6, 2, made), 1);
   ASSERT_TRUE(source.next());
   ASSERT_TRUE(source.next());
-  EXPECT_FALSE(source.next_time());
   try {
     source.next();
     FAIL() << "frame 2 should throw";

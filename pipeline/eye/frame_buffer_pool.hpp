@@ -26,7 +26,7 @@ void reuse_frame_buffers();
 void trim_frame_buffers();
 
 // Frees every buffer held for reuse (the bench, before it measures a
-// case's memory).
+// case's memory; `eyestream run`, after the set-up).
 void release_frame_buffers();
 
 // Bytes held for reuse now (for tests and the bench).

@@ -22,6 +22,7 @@
 #include "io/sink_factory.hpp"
 #include "io/source_factory.hpp"
 #include "io/staged_file.hpp"
+#include "pipeline/eye/frame_buffer_pool.hpp"
 #include "pipeline/run/output_paths.hpp"
 #include "pipeline/run/checkpoint.hpp"
 #include "pipeline/run/interrupts.hpp"
@@ -29,7 +30,6 @@
 #include "pipeline/run/progress.hpp"
 #include "pipeline/report/report_writer.hpp"
 #include "pipeline/run/run_inputs.hpp"
-#include "pipeline/eye/frame_buffer_pool.hpp"
 #include "pipeline/eye/target_region.hpp"
 
 namespace eyestream::pipeline {
@@ -213,15 +213,9 @@ RunSummary run(const Settings& s) {
   Progress progress(info.frame_count, s.progress && !s.quiet, s.progress_every_s, s.progress_file);
   // One frame decoded ahead: decoding (about 28 ms of a 1080p EXR) is far
   // shorter than the eye's frame, and each frame held costs a frame of
-  // memory. The loop reads the next frame's time from the queue and takes
-  // the frame only when it is done with the current one, so two decoded
-  // frames are held (the current and the next), not four.
-  io::PrefetchSource* prefetch = nullptr;
-  if (overlap_io(s)) {
-    auto p = std::make_unique<io::PrefetchSource>(std::move(source), 1);
-    prefetch = p.get();
-    source = std::move(p);
-  }
+  // memory. Three are held: the current one, the next (for its time) and
+  // the one queued; the decoder waits for room before it decodes another.
+  if (overlap_io(s)) source = std::make_unique<io::PrefetchSource>(std::move(source), 1);
   const std::int64_t first_processed =
       std::max<std::int64_t>(0, s.start_frame - std::int64_t(std::ceil(s.preroll_s * info.frames_per_second)));
   std::optional<io::SceneFrame> current = source->next();
@@ -238,15 +232,8 @@ RunSummary run(const Settings& s) {
       }
       break;
     }
-    std::optional<io::SceneFrame> next;
-    std::optional<double> next_time;
-    if (prefetch) {
-      next_time = prefetch->next_time();  // a frame that failed to read throws at next(), below
-    } else {
-      next = source->next();
-      if (next) next_time = next->time_s;
-    }
-    const double t1 = next_time.value_or(current->time_s + 1.0 / info.frames_per_second);
+    std::optional<io::SceneFrame> next = source->next();
+    const double t1 = next ? next->time_s : current->time_s + 1.0 / info.frames_per_second;
     const bool written = current->index >= s.start_frame;
     const io::DisplayFrame shown = renderer.process(*current, t1);
     const FrameReport& main_report = renderer.report(main);
@@ -259,7 +246,7 @@ RunSummary run(const Settings& s) {
       if (renderer.spec(i).viewer) report->add(current->index, current->time_s, v++, renderer.report(i));
     if (!s.state_exr.empty() && current->index == s.state_frame)
       state_file.emplace(renderer.eye(main).retina().stage_state(s.state_exr));
-    if (written && next_time && s.checkpoint_every > 0 && (current->index + 1 - s.start_frame) % s.checkpoint_every == 0) {
+    if (written && next && s.checkpoint_every > 0 && (current->index + 1 - s.start_frame) % s.checkpoint_every == 0) {
       sink->commit_so_far();  // the frames so far must outlive a crash
       write_checkpoint(s.checkpoint, {identity, settings, current->index + 1, report ? report->save() : nlohmann::json(),
                                       renderer.save()});
@@ -271,7 +258,6 @@ RunSummary run(const Settings& s) {
     if (s.verbose) log_frame(*current, main_report);
     summary.frames += written;
     progress.frame_done();
-    if (prefetch) next = source->next();
     current = std::move(next);
   }
   if (summary.frames == 0 && summary.interrupted_by) throw Interrupted(summary.interrupted_by);
