@@ -23,6 +23,7 @@ extern "C" {
 #include "io/video_source.hpp"
 #include "io/video_writer.hpp"
 #include "pipeline/preview/hdr10_encoding.hpp"
+#include "tests/decoded_video.hpp"
 #include "tests/test_support.hpp"
 
 namespace eyestream {
@@ -97,35 +98,14 @@ bool write_clip(const std::string& path, const std::vector<int>& codes, AVColorT
 
 // The first frame's luma plane of a video, decoded here (10-bit codes).
 cv::Mat decode_luma(const std::string& path) {
-  AVFormatContext* in = nullptr;
   cv::Mat luma;
-  if (avformat_open_input(&in, path.c_str(), nullptr, nullptr) < 0) return luma;
-  avformat_find_stream_info(in, nullptr);
-  const int s = av_find_best_stream(in, AVMEDIA_TYPE_VIDEO, -1, -1, nullptr, 0);
-  const AVCodec* dec = avcodec_find_decoder(in->streams[s]->codecpar->codec_id);
-  AVCodecContext* c = avcodec_alloc_context3(dec);
-  avcodec_parameters_to_context(c, in->streams[s]->codecpar);
-  avcodec_open2(c, dec, nullptr);
-  AVPacket* packet = av_packet_alloc();
-  AVFrame* f = av_frame_alloc();
-  bool got = false;
-  while (!got && av_read_frame(in, packet) >= 0) {
-    if (packet->stream_index == s) avcodec_send_packet(c, packet);
-    av_packet_unref(packet);
-    got = avcodec_receive_frame(c, f) >= 0;
-  }
-  if (!got) {
-    avcodec_send_packet(c, nullptr);
-    got = avcodec_receive_frame(c, f) >= 0;
-  }
-  if (got && f->format == AV_PIX_FMT_YUV420P10LE) {
-    luma.create(f->height, f->width, CV_16U);
-    for (int y = 0; y < f->height; ++y) std::memcpy(luma.ptr(y), f->data[0] + y * f->linesize[0], size_t(f->width) * 2);
-  }
-  av_frame_free(&f);
-  av_packet_free(&packet);
-  avcodec_free_context(&c);
-  avformat_close_input(&in);
+  test::for_each_decoded_frame(path, [&](const AVFrame& f) {
+    if (f.format == AV_PIX_FMT_YUV420P10LE) {
+      luma.create(f.height, f.width, CV_16U);
+      for (int y = 0; y < f.height; ++y) std::memcpy(luma.ptr(y), f.data[0] + y * f.linesize[0], size_t(f.width) * 2);
+    }
+    return false;  // the first frame only
+  });
   return luma;
 }
 

@@ -4,16 +4,12 @@
 // frames' types are read back by FFmpeg's decoder, not by the writer.
 #include <gtest/gtest.h>
 
-extern "C" {
-#include <libavcodec/avcodec.h>
-#include <libavformat/avformat.h>
-}
-
 #include <opencv2/imgproc.hpp>
 
 #include "io/video_writer.hpp"
 #include "pipeline/settings/quality_presets.hpp"
 #include "pipeline/settings/settings.hpp"
+#include "tests/decoded_video.hpp"
 #include "tests/test_support.hpp"
 
 namespace eyestream {
@@ -40,36 +36,14 @@ void write_moving_clip(const std::string& path, const std::string& preset, int b
   writer.finish();
 }
 
-// How many of a video's decoded frames are B-frames (-1 if it cannot be read).
+// How many of a video's decoded frames are B-frames (-1 unless all 30
+// frames decode).
 int b_frames_in(const std::string& path) {
-  AVFormatContext* in = nullptr;
-  if (avformat_open_input(&in, path.c_str(), nullptr, nullptr) < 0) return -1;
-  avformat_find_stream_info(in, nullptr);
-  const int s = av_find_best_stream(in, AVMEDIA_TYPE_VIDEO, -1, -1, nullptr, 0);
-  const AVCodec* decoder = avcodec_find_decoder(in->streams[s]->codecpar->codec_id);
-  AVCodecContext* c = avcodec_alloc_context3(decoder);
-  avcodec_parameters_to_context(c, in->streams[s]->codecpar);
-  avcodec_open2(c, decoder, nullptr);
-  AVPacket* packet = av_packet_alloc();
-  AVFrame* frame = av_frame_alloc();
-  int b = 0, frames = 0;
-  const auto drain = [&] {
-    while (avcodec_receive_frame(c, frame) >= 0) {
-      ++frames;
-      b += frame->pict_type == AV_PICTURE_TYPE_B;
-    }
-  };
-  while (av_read_frame(in, packet) >= 0) {
-    if (packet->stream_index == s) avcodec_send_packet(c, packet);
-    av_packet_unref(packet);
-    drain();
-  }
-  avcodec_send_packet(c, nullptr);
-  drain();
-  av_frame_free(&frame);
-  av_packet_free(&packet);
-  avcodec_free_context(&c);
-  avformat_close_input(&in);
+  int b = 0;
+  const int frames = test::for_each_decoded_frame(path, [&](const AVFrame& f) {
+    b += f.pict_type == AV_PICTURE_TYPE_B;
+    return true;
+  });
   return frames == 30 ? b : -1;
 }
 
