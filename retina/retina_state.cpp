@@ -172,15 +172,15 @@ void RetinaState::soften(double variance_sites2) {
 
 AfterimageMaps RetinaState::afterimages(const AfterimageOptions& options, const cv::Mat& visibility,
                                         std::optional<cv::Rect> within) const {
-  return afterimage_sites_of(options, visibility, within, true);
+  return afterimage_terms(options, visibility, within, true);
 }
 
 float RetinaState::largest_afterimage(const AfterimageOptions& options, const cv::Mat& visibility) const {
-  return afterimage_sites_of(options, visibility, std::nullopt, false).largest;
+  return afterimage_terms(options, visibility, std::nullopt, false).largest;
 }
 
-AfterimageMaps RetinaState::afterimage_sites_of(const AfterimageOptions& options, const cv::Mat& visibility,
-                                                std::optional<cv::Rect> within, bool with_maps) const {
+AfterimageMaps RetinaState::afterimage_terms(const AfterimageOptions& options, const cv::Mat& visibility,
+                                             std::optional<cv::Rect> within, bool with_maps) const {
   CV_Assert(!response_.empty() && visibility.size() == bleached_.size() && visibility.type() == CV_32F);
   const cv::Rect grid(cv::Point(0, 0), bleached_.size());
   const cv::Rect region = within ? *within : grid;

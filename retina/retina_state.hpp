@@ -72,8 +72,8 @@ class RetinaState {
   void restore(const std::vector<cv::Mat>& mats);
 
  private:
-  AfterimageMaps afterimage_sites_of(const AfterimageOptions& options, const cv::Mat& visibility,
-                                    std::optional<cv::Rect> within, bool with_maps) const;
+  AfterimageMaps afterimage_terms(const AfterimageOptions& options, const cv::Mat& visibility,
+                                  std::optional<cv::Rect> within, bool with_maps) const;
 
   PhotoreceptorParams params_;
   double c_max_;
