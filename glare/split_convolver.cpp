@@ -99,7 +99,18 @@ SplitConvolver::SplitConvolver(int width, int height, double ppd, int factor, co
     apply_window(*k, 1.0, r0, false);
     if (!with_centre) k->at<double>(near_.centre()) = 0.0;
   }
-  near_fft_ = std::make_unique<FftConvolver>(near_, width, height);
+  // Tiles need less memory (their spectra and buffers are a tile's size,
+  // 51 + 17 MB less at 1080p and factor 2) and took the same time as the
+  // whole frame where a tile's window is mostly output (factor 2: 0.77),
+  // 6 ms more at factor 4 (0.56; docs/performance.md).
+  if (tile_output_share(radius_) >= 0.7)
+    near_tiles_ = std::make_unique<TiledConvolver>(near_, width, height);
+  else
+    near_fft_ = std::make_unique<FftConvolver>(near_, width, height);
+  // Dense once the sources' direct cost exceeds half a whole-frame
+  // transform's (the tiles' own cost is about the same).
+  const int side = 2 * radius_ + 1;
+  dense_from_ = size_t(0.5 * double(fft_size(width + radius_)) * double(fft_size(height + radius_)) / (double(side) * side));
   // Middle: K (w_1 - w_0), reaching R_1 / f1 of its pixels.
   const int reach = int(std::ceil(r1 / f1));
   ComponentKernels middle = build_component_kernels(reach + 1, reach + 1, ppd / f1, optics);
@@ -134,18 +145,20 @@ cv::Mat SplitConvolver::convolve(const cv::Mat& rgb, const ChannelWeights& w) co
 }
 
 cv::Mat SplitConvolver::spread_near(const cv::Mat& rgb, const ChannelWeights& w) const {
-  // Dense (the whole image, or many lights): by FFT, padded by R only;
-  // decided as soon as the sources' direct cost exceeds the FFT's.
-  const int r = radius_, side = 2 * r + 1;
-  const size_t most = size_t(0.5 * double(near_fft_->transform_size().area()) / (double(side) * side));
+  // Dense (the whole image, or many lights): by FFT over tiles; decided as
+  // soon as the sources' direct cost exceeds the transform's.
+  const int r = radius_;
   std::vector<Source> sources;  // row by row: sorted by y
   cv::Mat out;
   for (int y = 0; y < rgb.rows; ++y) {
     const cv::Vec3f* row = rgb.ptr<cv::Vec3f>(y);
     for (int x = 0; x < rgb.cols; ++x)
       if (row[x] != cv::Vec3f()) sources.push_back({x, y, row[x]});
-    if (sources.size() > most) {
-      near_fft_->convolve(rgb, w, out);
+    if (sources.size() > dense_from_) {
+      if (near_tiles_)
+        near_tiles_->convolve(rgb, w, out);
+      else
+        near_fft_->convolve(rgb, w, out);
       return out;
     }
   }

@@ -17,7 +17,9 @@
 // (tests/split_engine_test.cpp); each coarse level is enlarged keeping its
 // block energies, so the engine moves light without adding any. Near
 // sources are scattered directly when the input is sparse (the excess over
-// the display peak usually is), else by an FFT padded by R_0.
+// the display peak usually is), else by FFT: over tiles of the frame
+// (tiled_convolver.hpp) where a tile's window is mostly output, as at
+// factor 2, else over the whole frame.
 #pragma once
 
 #include <memory>
@@ -27,6 +29,7 @@
 #include "glare/fft_convolver.hpp"
 #include "glare/linear_taps.hpp"
 #include "glare/psf_kernel.hpp"
+#include "glare/tiled_convolver.hpp"
 
 namespace eyestream::glare {
 
@@ -60,7 +63,11 @@ class SplitConvolver {
 
   int width_, height_, factor_, radius_;
   ComponentKernels near_;  // windowed, (2R+1) x (2R+1)
-  std::unique_ptr<FftConvolver> near_fft_;  // the near part of a dense frame
+  // The near part of a dense frame: by tiles where they waste little
+  // (tile_output_share), else by one whole-frame transform.
+  std::unique_ptr<TiledConvolver> near_tiles_;
+  std::unique_ptr<FftConvolver> near_fft_;
+  size_t dense_from_ = 0;  // sources beyond which the near part is dense
   std::vector<Level> coarse_;  // middle, tail
   std::vector<LinearTap> up_x_, up_y_;  // the middle level enlarged to the padded frame
   std::vector<double> up_column_weight_, up_row_weight_;  // each block's share of that enlargement

@@ -101,6 +101,8 @@ struct VideoWriter::Impl {
     av_dict_set(&opts, "crf", std::to_string(options.crf).c_str(), 0);
     av_dict_set(&opts, "preset", options.preset.c_str(), 0);
     if (options.codec == "hevc") av_dict_set(&opts, "x265-params", x265_params().c_str(), 0);
+    if (options.codec != "hevc" && options.lookahead >= 0)
+      av_dict_set(&opts, "rc-lookahead", std::to_string(options.lookahead).c_str(), 0);
     // x264's AVX-512 kernels (mbtree) read past their buffers, so its output
     // depended on what lay beside them (the thread count, the timing): on a
     // CPU with AVX-512, x264 is held to its AVX2 kernels, with which the

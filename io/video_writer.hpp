@@ -19,6 +19,7 @@ struct VideoOptions {
   int crf = 18;                   // constant rate factor, 0 (lossless) .. 51
   int keyint = 250;               // longest distance between keyframes (1: every frame)
   int b_frames = -1;              // most B-frames in a row; -1: the speed preset's
+  int lookahead = -1;             // frames x264's rate control looks ahead (H.264 only); -1: the speed preset's
   std::string preset = "medium";  // encoder speed preset
   int encoder_threads = 2;        // fixed, so output bytes do not depend on --threads
   std::string stream_format = "mkv";  // container on standard output (path "-"): mkv or mp4 (fragmented)

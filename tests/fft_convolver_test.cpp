@@ -6,48 +6,14 @@
 
 #include <cmath>
 
+#include "direct_convolution.hpp"
 #include "glare/fft_convolver.hpp"
 
 namespace eyestream::glare {
 namespace {
 
-// Small random component kernels, (2r + 1) square, CV_64F, point-symmetric
-// as the eye's PSF is (k(-x, -y) = k(x, y)) unless `symmetric` is false.
-ComponentKernels random_kernels(int r, unsigned seed, bool symmetric = true) {
-  cv::RNG rng(seed);
-  ComponentKernels k;
-  cv::Mat* parts[6] = {&k.core, &k.inner, &k.outer, &k.halo[0], &k.halo[1], &k.halo[2]};
-  for (cv::Mat* m : parts) {
-    m->create(2 * r + 1, 2 * r + 1, CV_64F);
-    rng.fill(*m, cv::RNG::UNIFORM, 0.0, 1.0);
-    cv::Mat turned;
-    cv::flip(*m, turned, -1);
-    if (symmetric) *m += turned;
-    *m /= cv::sum(*m)[0];
-  }
-  return k;
-}
-
-// out(x, y) = sum over sources of in(x', y') k(x - x' + r, y - y' + r), zero outside the frame.
-cv::Mat direct(const cv::Mat& in, const ComponentKernels& k, const PsfWeights& w) {
-  const int r = k.core.cols / 2;
-  cv::Mat out = cv::Mat::zeros(in.size(), CV_64FC3);
-  for (int c = 0; c < 3; ++c) {
-    const cv::Mat kc = w.core * k.core + w.inner * k.inner + w.outer * k.outer + w.halo * k.halo[c];
-    for (int y = 0; y < in.rows; ++y)
-      for (int x = 0; x < in.cols; ++x) {
-        double sum = 0;
-        for (int dy = -r; dy <= r; ++dy)
-          for (int dx = -r; dx <= r; ++dx) {
-            const int sx = x - dx, sy = y - dy;
-            if (sx < 0 || sy < 0 || sx >= in.cols || sy >= in.rows) continue;
-            sum += in.at<cv::Vec3f>(sy, sx)[c] * kc.at<double>(dy + r, dx + r);
-          }
-        out.at<cv::Vec3d>(y, x)[c] = sum;
-      }
-  }
-  return out;
-}
+using test::direct_convolution;
+using test::random_kernels;
 
 TEST(FftConvolver, SmallKernelsMatchTheDirectSum) {
   const ComponentKernels k = random_kernels(5, 7);
@@ -56,7 +22,7 @@ TEST(FftConvolver, SmallKernelsMatchTheDirectSum) {
   for (cv::Size size : {cv::Size(37, 23), cv::Size(64, 40)}) {
     cv::Mat in(size, CV_32FC3);
     cv::RNG(11).fill(in, cv::RNG::UNIFORM, 0.0, 100.0);
-    const cv::Mat want = direct(in, k, w);
+    const cv::Mat want = direct_convolution(in, k, w);
     const FftConvolver engine(k, size.width, size.height);
     EXPECT_GE(engine.transform_size().width, size.width + 5);
     EXPECT_LT(engine.transform_size().width, 2 * size.width) << "padded by the kernel's reach, not the frame's";
@@ -94,7 +60,7 @@ TEST(FftConvolver, KeepsANightRoadBesideAHeadlight) {
   // the kernel spreads off the frame near its edges: within 1e-6 of the
   // direct sum in the rows and columns checked.
   const cv::Mat road = cv::Mat(h, w, CV_32FC3, cv::Scalar::all(0.01));
-  const cv::Mat want = direct(road, k, weights);
+  const cv::Mat want = direct_convolution(road, k, weights);
   double worst = 0;
   for (int y = 0; y < h; y += 7)
     for (int x = 0; x < w; x += 7)

@@ -230,6 +230,10 @@ ParamSet run_parameters(Settings& s) {
                  "most B-frames in a row in a video; -1: the speed preset's (--quality balanced sets 0: x264 holds "
                  "fewer frames)",
                  out, &s.sink.video.b_frames, -1, 16));
+  set.add(number("lookahead", "frames",
+                 "frames H.264's rate control looks ahead (x264's macroblock tree); -1: the speed preset's "
+                 "(--quality balanced sets 5: x264 holds fewer frames)",
+                 out, &s.sink.video.lookahead, -1, 250));
   set.add(number("crf", "", "video constant rate factor (lower is better)", out, &s.sink.video.crf, 0, 51));
   set.add(choice("x264-preset", "video encoder speed preset (x264 and x265 names; --quality sets medium, veryfast or ultrafast)", out, &s.sink.video.preset,
                  {"ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow"}));

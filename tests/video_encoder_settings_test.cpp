@@ -1,9 +1,14 @@
-// B-frames in the video: --b-frames 0 gives none, -1 leaves the speed
-// preset's (x264 veryfast makes them on moving content), and --quality
-// balanced sets 0 (x264 holds fewer frames: docs/performance.md). The
-// frames' types are read back by FFmpeg's decoder, not by the writer.
+// The encoder settings the presets choose for memory. B-frames: --b-frames
+// 0 gives none, -1 leaves the speed preset's (x264 veryfast makes them on
+// moving content), and --quality balanced sets 0. Lookahead: --lookahead
+// N makes x264 look N frames ahead, -1 leaves the speed preset's, and
+// balanced sets 5. Both hold fewer frames in x264 (docs/performance.md).
+// The frames' types are read back by FFmpeg's decoder, and the lookahead
+// from the settings x264 itself writes into the stream, not by the writer.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
 #include <opencv2/imgproc.hpp>
 
 #include "io/video_writer.hpp"
@@ -17,10 +22,11 @@ namespace {
 
 // 30 frames of a bright square crossing a textured field, as `preset` with
 // `b_frames` writes them.
-void write_moving_clip(const std::string& path, const std::string& preset, int b_frames) {
+void write_moving_clip(const std::string& path, const std::string& preset, int b_frames, int lookahead = -1) {
   io::VideoOptions o;
   o.preset = preset;
   o.b_frames = b_frames;
+  o.lookahead = lookahead;
   io::VideoWriter writer(path, o);
   cv::Mat field(128, 192, CV_8UC3);
   cv::randu(field, cv::Scalar::all(40), cv::Scalar::all(120));
@@ -60,6 +66,33 @@ TEST(VideoBFrames, BalancedSetsNoneAndTheOtherPresetsLeaveTheSpeedPresets) {
     pipeline::Settings s;
     pipeline::apply_quality_preset(name, s);
     EXPECT_EQ(s.sink.video.b_frames, std::string(name) == "balanced" ? 0 : -1) << name;
+  }
+}
+
+// The lookahead x264 reports in the settings it writes into the stream
+// (its SEI text, "... rc_lookahead=N ..."); -1 if there is none.
+int reported_lookahead(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string key = " rc_lookahead=";
+  const size_t at = bytes.find(key);
+  return at == std::string::npos ? -1 : std::atoi(bytes.c_str() + at + key.size());
+}
+
+TEST(VideoLookahead, TheOptionSetsX264sAndMinusOneLeavesThePresets) {
+  test::ScratchDir dir;
+  write_moving_clip(dir / "preset.mp4", "veryfast", -1);
+  write_moving_clip(dir / "five.mp4", "veryfast", -1, 5);
+  EXPECT_EQ(reported_lookahead(dir / "preset.mp4"), 10) << "x264 veryfast's own";
+  EXPECT_EQ(reported_lookahead(dir / "five.mp4"), 5);
+  EXPECT_GE(b_frames_in(dir / "five.mp4"), 0) << "the stream still decodes whole";
+}
+
+TEST(VideoLookahead, BalancedSetsFiveAndTheOtherPresetsLeaveTheSpeedPresets) {
+  for (const char* name : {"reference", "balanced", "fast"}) {
+    pipeline::Settings s;
+    pipeline::apply_quality_preset(name, s);
+    EXPECT_EQ(s.sink.video.lookahead, std::string(name) == "balanced" ? 5 : -1) << name;
   }
 }
 

@@ -1,0 +1,141 @@
+#include "glare/tiled_convolver.hpp"
+
+#include <fftw3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <mutex>
+#include <vector>
+
+#include "glare/fftw_planner.hpp"
+#include "glare/kernel_spectra.hpp"
+
+namespace eyestream::glare {
+
+int tile_size_for(int radius) {
+  const auto cost = [&](int t) {
+    const double b = t - 2.0 * radius;
+    return b < 1.0 ? HUGE_VAL : double(t) * t * std::log2(double(t) * t) / (b * b);
+  };
+  int best = 0;
+  for (int t = 64; t <= 512; t *= 2) {
+    if (t == 512 && 2 * (256 - 2 * radius) >= 256) break;  // 256 keeps half its window: stay in cache
+    if (best == 0 || cost(t) < cost(best)) best = t;
+  }
+  // Beyond 512 (reaches over 255 px), the least power of two with a
+  // quarter of its side left as output.
+  while (cost(best) == HUGE_VAL || best - 2 * radius < best / 4) best *= 2;
+  return best;
+}
+
+double tile_output_share(int radius) {
+  const int t = tile_size_for(radius);
+  const double s = double(t - 2 * radius) / t;
+  return s * s;
+}
+
+struct TiledConvolver::Engine {
+  int width = 0, height = 0, radius = 0, t = 0, block = 0, half = 0;
+  std::vector<double> spectra[6];  // core, inner, outer, halo R, G, B: real parts, t x (t / 2 + 1)
+  fftw_plan forward = nullptr, backward = nullptr;
+};
+
+TiledConvolver::TiledConvolver(const ComponentKernels& k, int width, int height) : engine_(std::make_unique<Engine>()) {
+  Engine& e = *engine_;
+  CV_Assert(k.core.rows == k.core.cols && k.core.cols % 2 == 1 && width > 0 && height > 0);
+  e.width = width;
+  e.height = height;
+  e.radius = k.core.cols / 2;
+  e.t = tile_size_for(e.radius);
+  e.block = e.t - 2 * e.radius;
+  e.half = e.t / 2 + 1;
+  const size_t n = size_t(e.t) * e.half;
+  kernel_spectra({&k.core, &k.inner, &k.outer, &k.halo[0], &k.halo[1], &k.halo[2]}, e.t, e.t,
+                 [&](int i, const double (*s)[2]) {
+                   std::vector<double>& out = e.spectra[i];
+                   out.resize(n);
+                   for (size_t j = 0; j < n; ++j) out[j] = s[j][0];
+                 });
+  std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+  double* real = fftw_alloc_real(size_t(e.t) * e.t);
+  fftw_complex* spectrum = fftw_alloc_complex(n);
+  e.forward = fftw_plan_dft_r2c_2d(e.t, e.t, real, spectrum, FFTW_ESTIMATE);
+  e.backward = fftw_plan_dft_c2r_2d(e.t, e.t, spectrum, real, FFTW_ESTIMATE);
+  fftw_free(real);
+  fftw_free(spectrum);
+}
+
+TiledConvolver::~TiledConvolver() {
+  std::lock_guard<std::mutex> lock(fftw_planner_mutex());
+  fftw_destroy_plan(engine_->forward);
+  fftw_destroy_plan(engine_->backward);
+}
+
+int TiledConvolver::tile_size() const { return engine_->t; }
+
+void TiledConvolver::convolve(const cv::Mat& rgb, const ChannelWeights& w, cv::Mat& out) const {
+  const Engine& e = *engine_;
+  CV_Assert(rgb.type() == CV_32FC3 && rgb.cols == e.width && rgb.rows == e.height);
+  out.create(rgb.size(), CV_32FC3);
+  const int t = e.t, r = e.radius, b = e.block;
+  const size_t n = size_t(t) * e.half;
+  // Each channel's combined kernel spectrum for this frame's weights.
+  std::vector<double> kernel(3 * n);
+  for (int c = 0; c < 3; ++c) {
+    const double w0 = w[size_t(c)].core, w1 = w[size_t(c)].inner, w2 = w[size_t(c)].outer, w3 = w[size_t(c)].halo;
+    const double *k0 = e.spectra[0].data(), *k1 = e.spectra[1].data(), *k2 = e.spectra[2].data(),
+                 *k3 = e.spectra[3 + c].data();
+    double* kc = kernel.data() + size_t(c) * n;
+    for (size_t j = 0; j < n; ++j) kc[j] = w0 * k0[j] + w1 * k1[j] + w2 * k2[j] + w3 * k3[j];
+  }
+  const int across = (e.width + b - 1) / b, down = (e.height + b - 1) / b;
+  const double scale = 1.0 / (double(t) * t);
+  cv::parallel_for_(cv::Range(0, across * down), [&](const cv::Range& range) {
+    double* real = fftw_alloc_real(size_t(t) * t);
+    fftw_complex* spectrum = fftw_alloc_complex(n);
+    for (int tile = range.start; tile < range.end; ++tile) {
+      // Output block [x0, x0 + b) x [y0, y0 + b) of the frame, read from
+      // the window r pixels wider each way.
+      const int x0 = (tile % across) * b, y0 = (tile / across) * b;
+      const int wx0 = std::max(x0 - r, 0), wx1 = std::min(x0 + b + r, e.width);
+      const int wy0 = std::max(y0 - r, 0), wy1 = std::min(y0 + b + r, e.height);
+      const int ox1 = std::min(x0 + b, e.width), oy1 = std::min(y0 + b, e.height);
+      for (int c = 0; c < 3; ++c) {
+        std::memset(real, 0, sizeof(double) * size_t(t) * t);
+        bool lit = false;
+        for (int y = wy0; y < wy1; ++y) {
+          const cv::Vec3f* in = rgb.ptr<cv::Vec3f>(y);
+          double* row = real + size_t(y - y0 + r) * t + (wx0 - x0 + r);
+          for (int x = wx0; x < wx1; ++x) {
+            row[x - wx0] = double(in[x][c]);
+            lit |= in[x][c] != 0.0f;
+          }
+        }
+        if (!lit) {
+          for (int y = y0; y < oy1; ++y) {
+            cv::Vec3f* o = out.ptr<cv::Vec3f>(y);
+            for (int x = x0; x < ox1; ++x) o[x][c] = 0.0f;
+          }
+          continue;
+        }
+        fftw_execute_dft_r2c(e.forward, real, spectrum);
+        const double* kc = kernel.data() + size_t(c) * n;
+        for (size_t j = 0; j < n; ++j) {
+          spectrum[j][0] *= kc[j];
+          spectrum[j][1] *= kc[j];
+        }
+        fftw_execute_dft_c2r(e.backward, spectrum, real);
+        for (int y = y0; y < oy1; ++y) {
+          const double* row = real + size_t(y - y0 + r) * t + r;
+          cv::Vec3f* o = out.ptr<cv::Vec3f>(y);
+          for (int x = x0; x < ox1; ++x) o[x][c] = float(std::max(row[x - x0] * scale, 0.0));
+        }
+      }
+    }
+    fftw_free(real);
+    fftw_free(spectrum);
+  });
+}
+
+}  // namespace eyestream::glare

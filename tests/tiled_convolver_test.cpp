@@ -1,0 +1,130 @@
+// The tiled FFT engine (glare/tiled_convolver.hpp) against a direct sum
+// computed here (direct_convolution.hpp): frames of several tiles whose
+// sizes are not whole tiles, sparse light that leaves whole tiles unlit,
+// its rounding beside a headlight, and results the same on any number of
+// threads. Its tile size against the cost it is chosen by.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "direct_convolution.hpp"
+#include "glare/split_convolver.hpp"
+#include "glare/tiled_convolver.hpp"
+
+namespace eyestream::glare {
+namespace {
+
+using test::direct_convolution;
+using test::random_kernels;
+
+PsfWeights some_weights() {
+  PsfWeights w;
+  w.core = 0.7, w.inner = 0.1, w.outer = 0.15, w.halo = 0.05;
+  return w;
+}
+
+double worst_difference(const cv::Mat& got, const cv::Mat& want) {
+  cv::Mat got64;
+  got.convertTo(got64, CV_64FC3);
+  return cv::norm(got64, want, cv::NORM_INF);
+}
+
+TEST(TiledConvolver, TileSizeIsTheCheapestPowerOfTwo) {
+  // Work per output pixel T^2 log2(T^2) / (T - 2R)^2, computed here.
+  const auto cost = [](int t, int r) { return t * t * std::log2(double(t) * t) / std::pow(t - 2.0 * r, 2); };
+  EXPECT_EQ(tile_size_for(16), 256);  // the split engine's near part at factor 2
+  EXPECT_LT(cost(256, 16), cost(128, 16));
+  EXPECT_EQ(tile_size_for(5), 128);
+  EXPECT_LT(cost(128, 5), cost(64, 5));
+  EXPECT_LT(cost(128, 5), cost(256, 5));
+  EXPECT_EQ(tile_size_for(32), 256);  // 512 would not stay in cache
+  EXPECT_EQ(tile_size_for(100), 512);
+  EXPECT_GT(tile_size_for(300) - 600, tile_size_for(300) / 4 - 1);  // no tile of no output
+  EXPECT_NEAR(tile_output_share(16), std::pow(224.0 / 256.0, 2), 1e-12);
+}
+
+TEST(TiledConvolver, MatchesTheDirectSumOverSeveralTiles) {
+  const PsfWeights w = some_weights();
+  for (int r : {5, 16}) {
+    const ComponentKernels k = random_kernels(r, 7);
+    const TiledConvolver engine(k, 1, 1);
+    const int block = engine.tile_size() - 2 * r;
+    // Two and a bit tiles across, one and a bit down: every edge case of
+    // a tile's window (frame edges, neighbours' rows).
+    const cv::Size size(2 * block + 17, block + 9);
+    cv::Mat in(size, CV_32FC3);
+    cv::RNG(11).fill(in, cv::RNG::UNIFORM, 0.0, 100.0);
+    cv::Mat got;
+    TiledConvolver(k, size.width, size.height).convolve(in, same_in_every_channel(w), got);
+    EXPECT_LT(worst_difference(got, direct_convolution(in, k, w)), 1e-4) << "r " << r;  // values near 100, as float
+  }
+}
+
+TEST(TiledConvolver, UnlitTilesAndChannelsStayDark) {
+  // One light near a tile's edge, in red only: its reach crosses into the
+  // next tile; the tiles it does not reach and the other channels are 0.
+  const int r = 5;
+  const ComponentKernels k = random_kernels(r, 3);
+  const int block = TiledConvolver(k, 1, 1).tile_size() - 2 * r;
+  const cv::Size size(3 * block, 2 * block);
+  cv::Mat in = cv::Mat::zeros(size, CV_32FC3);
+  in.at<cv::Vec3f>(block / 2, block - 2)[0] = 1e4f;
+  cv::Mat got;
+  TiledConvolver(k, size.width, size.height).convolve(in, same_in_every_channel(some_weights()), got);
+  EXPECT_LT(worst_difference(got, direct_convolution(in, k, some_weights())), 1e-3);
+  std::vector<cv::Mat> channels;
+  cv::split(got, channels);
+  EXPECT_EQ(cv::countNonZero(channels[1]), 0);
+  EXPECT_EQ(cv::countNonZero(channels[2]), 0);
+  EXPECT_GT(cv::countNonZero(channels[0](cv::Rect(block, 0, block, block))), 0) << "spread into the next tile";
+  EXPECT_EQ(cv::countNonZero(channels[0](cv::Rect(2 * block, 0, block, 2 * block))), 0);
+  EXPECT_EQ(cv::countNonZero(channels[0](cv::Rect(0, block, 3 * block, block))), 0);
+}
+
+TEST(TiledConvolver, KeepsANightRoadBesideAHeadlight) {
+  // As the whole-frame engine's test: a 0.01 cd/m^2 road, one 1e5 cd/m^2
+  // headlight pixel, a 33 px kernel falling as 1/r^3.
+  const int r = 16, width = 640, height = 300;
+  ComponentKernels k;
+  k.core = cv::Mat::zeros(2 * r + 1, 2 * r + 1, CV_64F);
+  for (int y = -r; y <= r; ++y)
+    for (int x = -r; x <= r; ++x) k.core.at<double>(y + r, x + r) = 1.0 / std::pow(1.0 + std::hypot(x, y), 3);
+  k.core /= cv::sum(k.core)[0];
+  k.inner = k.outer = k.halo[0] = k.halo[1] = k.halo[2] = cv::Mat::zeros(k.core.size(), CV_64F);
+  PsfWeights weights;
+  weights.core = 1.0, weights.inner = weights.outer = weights.halo = 0.0;
+  cv::Mat in(height, width, CV_32FC3, cv::Scalar::all(0.01));
+  in.at<cv::Vec3f>(90, 160) = cv::Vec3f::all(1e5f);
+  cv::Mat out;
+  TiledConvolver(k, width, height).convolve(in, same_in_every_channel(weights), out);
+  const cv::Mat want = direct_convolution(cv::Mat(height, width, CV_32FC3, cv::Scalar::all(0.01)), k, weights);
+  double worst = 0;
+  for (int y = 0; y < height; y += 7)
+    for (int x = 0; x < width; x += 7)
+      if (std::max(std::abs(x - 160), std::abs(y - 90)) > r)  // beyond the square kernel
+        worst = std::max(worst, std::abs(double(out.at<cv::Vec3f>(y, x)[1]) - want.at<cv::Vec3d>(y, x)[1]));
+  EXPECT_LT(worst, 1e-6) << "rounding on a 0.01 cd/m^2 road beside 1e5 cd/m^2";
+}
+
+TEST(TiledConvolver, SameResultOnAnyNumberOfThreads) {
+  const ComponentKernels k = random_kernels(16, 5);
+  const cv::Size size(700, 400);
+  cv::Mat in(size, CV_32FC3);
+  cv::RNG(2).fill(in, cv::RNG::UNIFORM, 0.0, 1e3);
+  const TiledConvolver engine(k, size.width, size.height);
+  const int threads = cv::getNumThreads();
+  cv::Mat one, many;
+  cv::setNumThreads(1);
+  engine.convolve(in, same_in_every_channel(some_weights()), one);
+  cv::setNumThreads(4);
+  engine.convolve(in, same_in_every_channel(some_weights()), many);
+  cv::setNumThreads(threads);
+  EXPECT_EQ(cv::norm(one, many, cv::NORM_INF), 0.0);
+}
+
+TEST(TiledConvolver, RefusesAKernelThatIsNotPointSymmetric) {
+  EXPECT_THROW(TiledConvolver(random_kernels(5, 7, false), 37, 23), cv::Exception);
+}
+
+}  // namespace
+}  // namespace eyestream::glare
