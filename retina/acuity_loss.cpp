@@ -112,22 +112,28 @@ void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
   // pixel takes: levels beyond it are not made.
   cv::Mat first(image.size(), CV_8U);
   std::vector<std::uint8_t> row_deepest(size_t(image.rows), 0);
+  std::vector<std::uint32_t> row_taken(size_t(image.rows), 0);  // bit k: some pixel of the row takes level k
   cv::parallel_for_(cv::Range(0, image.rows), [&](const cv::Range& rows) {
     for (int y = rows.start; y < rows.end; ++y) {
       const float* lv = level.ptr<float>(y);
       std::uint8_t* k_row = first.ptr<std::uint8_t>(y);
       std::uint8_t deepest = 0;
+      std::uint32_t taken = 0;
       for (int x = 0; x < image.cols; ++x) {
         int k = 0;
         while (k < n && !(lv[x] > tau[size_t(k)])) ++k;
         k_row[x] = std::uint8_t(k);
         deepest = std::max(deepest, k_row[x]);
+        taken |= 1u << k;
       }
       row_deepest[size_t(y)] = deepest;
+      row_taken[size_t(y)] = taken;
     }
   });
   const int deepest = *std::max_element(row_deepest.begin(), row_deepest.end());
   if (deepest == 0) return;
+  std::uint32_t taken = 0;
+  for (std::uint32_t t : row_taken) taken |= t;
   // The levels are made one from the last. A full-resolution level is
   // written to its pixels as soon as the next level is made (the image,
   // level 0, is the first level's source only), so two full-frame levels
@@ -141,11 +147,25 @@ void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
   cv::Mat last = image;
   int f = 1;
   double variance = 0.0;  // of the stored level, full-resolution px^2
+  // Whether level i is held reduced once more than the last.
+  const auto halves = [&](int i, int f_now, cv::Size at) {
+    return params_.pyramid_from_px > 0 && sigmas_px_[size_t(i - 1)] / (2 * f_now) >= params_.pyramid_from_px / 2 &&
+           at.width >= 16 && at.height >= 16;
+  };
+  int last_k = 0;  // the level `last` holds
   for (int i = 1; i <= deepest; ++i) {
     const double sigma = sigmas_px_[size_t(i - 1)];
     cv::Mat from = last;
-    if (params_.pyramid_from_px > 0 && sigma / (2 * f) >= params_.pyramid_from_px / 2 && from.cols >= 16 &&
-        from.rows >= 16) {
+    const bool halving = halves(i, f, from.size());
+    // A level no pixel takes, followed by one at the same resolution, is
+    // not made: the next level's blur supplies its variance too, from the
+    // last level made (one sweep instead of two). A level halved next is
+    // made, so that the reduction reads a blurred image.
+    if (!halving && i < deepest && !(taken >> i & 1u) && !halves(i + 1, f, from.size())) {
+      factor[size_t(i)] = f;
+      continue;
+    }
+    if (halving) {
       cv::Mat reduced;
       cv::resize(from, reduced, cv::Size((from.cols + 1) / 2, (from.rows + 1) / 2), 0, 0, cv::INTER_AREA);
       variance += f * f / 4.0;
@@ -160,24 +180,25 @@ void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
     cv::Mat made;
     // The last level, when full-resolution and not the image itself, is
     // written to its pixels row by row as this level's blur reads it.
-    const bool write_last = i > 1 && factor[size_t(i - 1)] == 1 && last.data != image.data;
+    const bool write_last = last_k > 0 && factor[size_t(last_k)] == 1 && last.data != image.data;
     bool written = false;
     if (extra < 0.19) {
       made = from;
     } else {
       std::function<void(int)> write_row;
       if (write_last && from.data == last.data) {
-        write_row = [&](int y) { write_full_row(image, first, row_deepest, i - 1, last, y); };
+        write_row = [&](int y) { write_full_row(image, first, row_deepest, last_k, last, y); };
         written = true;
       }
       gaussian_blur(from, made, extra, write_row);
       variance = std::max(variance, target);
     }
     if (write_last && !written)
-      write_full_level(image, first, row_deepest, i - 1, last);
-    else if (i > 1 && factor[size_t(i - 1)] != 1)
-      kept[size_t(i - 1)] = last;
+      write_full_level(image, first, row_deepest, last_k, last);
+    else if (last_k > 0 && factor[size_t(last_k)] != 1)
+      kept[size_t(last_k)] = last;
     last = made;
+    last_k = i;
   }
   kept[size_t(deepest)] = last;
   // The kept levels' pixels; a full-resolution one (the deepest only) is
