@@ -75,7 +75,7 @@ SceneFrame ExrSequenceSource::frame_from(ExrImage image, std::int64_t nonfinite,
   frame.nonfinite = nonfinite;
   frame.sole_buffer = true;
   frame.index = index;
-  frame.time_s = double(entry.number - entries_.front().number) / info_.frames_per_second;
+  frame.time_s = sequence_time(entries_, size_t(index), info_.frames_per_second);
   frame.source = entry.path;
   return frame;
 }
@@ -90,6 +90,11 @@ std::optional<SceneFrame> ExrSequenceSource::next() {
     return f;
   }
   return decode(entry, index);
+}
+
+std::optional<double> ExrSequenceSource::time_of(std::int64_t index) const {
+  if (index < 0 || size_t(index) >= entries_.size()) return std::nullopt;
+  return sequence_time(entries_, size_t(index), info_.frames_per_second);
 }
 
 }  // namespace eyestream::io

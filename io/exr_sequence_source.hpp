@@ -33,6 +33,8 @@ class ExrSequenceSource : public FrameSource {
   ExrSequenceSource(const std::string& input, const ExrSequenceOptions& options);
   const SourceInfo& info() const override { return info_; }
   std::optional<SceneFrame> next() override;
+  bool knows_times() const override { return true; }
+  std::optional<double> time_of(std::int64_t index) const override;
 
  private:
   SceneFrame decode(const SequenceEntry& entry, std::int64_t index) const;

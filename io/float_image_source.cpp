@@ -86,10 +86,15 @@ std::optional<SceneFrame> FloatImageSource::next() {
   const double scale = options_.scale.value_or(lower_extension(entry.path) == ".hdr" ? 179.0 : 1.0);
   if (scale != 1.0) f.rgb *= scale;
   f.index = index;
-  f.time_s = double(entry.number - entries_.front().number) / info_.frames_per_second;
+  f.time_s = sequence_time(entries_, size_t(index), info_.frames_per_second);
   f.source = entry.path;
   f.sole_buffer = true;
   return f;
+}
+
+std::optional<double> FloatImageSource::time_of(std::int64_t index) const {
+  if (index < 0 || size_t(index) >= entries_.size()) return std::nullopt;
+  return sequence_time(entries_, size_t(index), info_.frames_per_second);
 }
 
 }  // namespace eyestream::io

@@ -139,4 +139,8 @@ std::string lower_extension(const std::string& path) {
   return ext;
 }
 
+double sequence_time(const std::vector<SequenceEntry>& entries, size_t i, double frames_per_second) {
+  return double(entries[i].number - entries.front().number) / frames_per_second;
+}
+
 }  // namespace eyestream::io

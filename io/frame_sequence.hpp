@@ -12,6 +12,10 @@ struct SequenceEntry {
   std::int64_t number;  // frame number in the pattern; position for folders
 };
 
+// The time of entry i of a sequence: (number_i - number_0) / fps, so a
+// skipped frame keeps the timing of the rest.
+double sequence_time(const std::vector<SequenceEntry>& entries, size_t i, double frames_per_second);
+
 // True when `pattern` holds one printf integer conversion (%d, %05d, %5d).
 bool is_printf_pattern(const std::string& pattern);
 

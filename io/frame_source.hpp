@@ -24,6 +24,13 @@ class FrameSource {
   // The next frame in presentation order, or nothing at the end. Throws
   // InputError naming the file and frame on a bad frame.
   virtual std::optional<SceneFrame> next() = 0;
+  // Whether the source knows its frames' times without decoding them (file
+  // sequences: from the file numbers). Then time_of(index) is the time of
+  // the frame next() numbers `index`, or nothing if there is no such
+  // frame; it reads only what the constructor set, so it may be called
+  // while another thread is in next().
+  virtual bool knows_times() const { return false; }
+  virtual std::optional<double> time_of(std::int64_t /*index*/) const { return std::nullopt; }
 };
 
 }  // namespace eyestream::io

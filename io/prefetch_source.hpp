@@ -22,6 +22,8 @@ class PrefetchSource : public FrameSource {
 
   const SourceInfo& info() const override { return source_->info(); }
   std::optional<SceneFrame> next() override;
+  bool knows_times() const override { return source_->knows_times(); }
+  std::optional<double> time_of(std::int64_t index) const override { return source_->time_of(index); }
 
  private:
   struct Item {

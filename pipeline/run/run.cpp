@@ -213,8 +213,11 @@ RunSummary run(const Settings& s) {
   Progress progress(info.frame_count, s.progress && !s.quiet, s.progress_every_s, s.progress_file);
   // One frame decoded ahead: decoding (about 28 ms of a 1080p EXR) is far
   // shorter than the eye's frame, and each frame held costs a frame of
-  // memory. Three are held: the current one, the next (for its time) and
-  // the one queued; the decoder waits for room before it decodes another.
+  // memory. The eye needs the next frame's time: a file sequence knows it
+  // from the file numbers, and two frames are held, the current one and
+  // the one being decoded or queued; a video knows it only by decoding, and
+  // three are held, the next one taken early for its time. The decoder
+  // waits for room before it decodes another.
   if (overlap_io(s)) source = std::make_unique<io::PrefetchSource>(std::move(source), 1);
   const std::int64_t first_processed =
       std::max<std::int64_t>(0, s.start_frame - std::int64_t(std::ceil(s.preroll_s * info.frames_per_second)));
@@ -232,8 +235,13 @@ RunSummary run(const Settings& s) {
       }
       break;
     }
-    std::optional<io::SceneFrame> next = source->next();
-    const double t1 = next ? next->time_s : current->time_s + 1.0 / info.frames_per_second;
+    const bool times_known = source->knows_times();
+    std::optional<io::SceneFrame> next;
+    if (!times_known) next = source->next();
+    const std::optional<double> next_time = times_known ? source->time_of(current->index + 1)
+                                            : next        ? std::optional<double>(next->time_s)
+                                                          : std::nullopt;
+    const double t1 = next_time ? *next_time : current->time_s + 1.0 / info.frames_per_second;
     const bool written = current->index >= s.start_frame;
     const io::DisplayFrame shown = renderer.process(*current, t1);
     const FrameReport& main_report = renderer.report(main);
@@ -246,7 +254,7 @@ RunSummary run(const Settings& s) {
       if (renderer.spec(i).viewer) report->add(current->index, current->time_s, v++, renderer.report(i));
     if (!s.state_exr.empty() && current->index == s.state_frame)
       state_file.emplace(renderer.eye(main).retina().stage_state(s.state_exr));
-    if (written && next && s.checkpoint_every > 0 && (current->index + 1 - s.start_frame) % s.checkpoint_every == 0) {
+    if (written && next_time && s.checkpoint_every > 0 && (current->index + 1 - s.start_frame) % s.checkpoint_every == 0) {
       sink->commit_so_far();  // the frames so far must outlive a crash
       write_checkpoint(s.checkpoint, {identity, settings, current->index + 1, report ? report->save() : nlohmann::json(),
                                       renderer.save()});
@@ -258,7 +266,7 @@ RunSummary run(const Settings& s) {
     if (s.verbose) log_frame(*current, main_report);
     summary.frames += written;
     progress.frame_done();
-    current = std::move(next);
+    current = times_known ? source->next() : std::move(next);
   }
   if (summary.frames == 0 && summary.interrupted_by) throw Interrupted(summary.interrupted_by);
   if (summary.frames == 0)
