@@ -2,6 +2,8 @@
 
 #include <fftw3.h>
 
+#include <opencv2/core/utils/tls.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -23,8 +25,8 @@ int tile_size_for(int radius) {
     if (t == 512 && 2 * (256 - 2 * radius) >= 256) break;  // 256 keeps half its window: stay in cache
     if (best == 0 || cost(t) < cost(best)) best = t;
   }
-  // Beyond 512 (reaches over 255 px), the least power of two with a
-  // quarter of its side left as output.
+  // A larger tile while the chosen one leaves less than a quarter of its
+  // side as output (reaches of 193 px or more).
   while (cost(best) == HUGE_VAL || best - 2 * radius < best / 4) best *= 2;
   return best;
 }
@@ -35,9 +37,22 @@ double tile_output_share(int radius) {
   return s * s;
 }
 
+// A thread's arrays for one tile's transforms, made at its first tile and
+// kept with the engine: the frame loop asks the allocator for nothing.
+struct TileArrays {
+  double* real = nullptr;
+  fftw_complex* spectrum = nullptr;
+  ~TileArrays() {
+    fftw_free(real);
+    fftw_free(spectrum);
+  }
+};
+
 struct TiledConvolver::Engine {
   int width = 0, height = 0, radius = 0, t = 0, block = 0, half = 0;
   std::vector<double> spectra[6];  // core, inner, outer, halo R, G, B: real parts, t x (t / 2 + 1)
+  std::vector<double> combined;    // this frame's spectrum of each channel's kernel, 3 t (t / 2 + 1)
+  cv::TLSData<TileArrays> arrays;
   fftw_plan forward = nullptr, backward = nullptr;
 };
 
@@ -51,6 +66,7 @@ TiledConvolver::TiledConvolver(const ComponentKernels& k, int width, int height)
   e.block = e.t - 2 * e.radius;
   e.half = e.t / 2 + 1;
   const size_t n = size_t(e.t) * e.half;
+  e.combined.resize(3 * n);
   kernel_spectra({&k.core, &k.inner, &k.outer, &k.halo[0], &k.halo[1], &k.halo[2]}, e.t, e.t,
                  [&](int i, const double (*s)[2]) {
                    std::vector<double>& out = e.spectra[i];
@@ -75,13 +91,13 @@ TiledConvolver::~TiledConvolver() {
 int TiledConvolver::tile_size() const { return engine_->t; }
 
 void TiledConvolver::convolve(const cv::Mat& rgb, const ChannelWeights& w, cv::Mat& out) const {
-  const Engine& e = *engine_;
+  Engine& e = *engine_;
   CV_Assert(rgb.type() == CV_32FC3 && rgb.cols == e.width && rgb.rows == e.height);
   out.create(rgb.size(), CV_32FC3);
   const int t = e.t, r = e.radius, b = e.block;
   const size_t n = size_t(t) * e.half;
   // Each channel's combined kernel spectrum for this frame's weights.
-  std::vector<double> kernel(3 * n);
+  std::vector<double>& kernel = e.combined;
   for (int c = 0; c < 3; ++c) {
     const double w0 = w[size_t(c)].core, w1 = w[size_t(c)].inner, w2 = w[size_t(c)].outer, w3 = w[size_t(c)].halo;
     const double *k0 = e.spectra[0].data(), *k1 = e.spectra[1].data(), *k2 = e.spectra[2].data(),
@@ -92,8 +108,13 @@ void TiledConvolver::convolve(const cv::Mat& rgb, const ChannelWeights& w, cv::M
   const int across = (e.width + b - 1) / b, down = (e.height + b - 1) / b;
   const double scale = 1.0 / (double(t) * t);
   cv::parallel_for_(cv::Range(0, across * down), [&](const cv::Range& range) {
-    double* real = fftw_alloc_real(size_t(t) * t);
-    fftw_complex* spectrum = fftw_alloc_complex(n);
+    TileArrays& a = e.arrays.getRef();
+    if (!a.real) {
+      a.real = fftw_alloc_real(size_t(t) * t);
+      a.spectrum = fftw_alloc_complex(n);
+    }
+    double* real = a.real;
+    fftw_complex* spectrum = a.spectrum;
     for (int tile = range.start; tile < range.end; ++tile) {
       // Output block [x0, x0 + b) x [y0, y0 + b) of the frame, read from
       // the window r pixels wider each way.
@@ -133,8 +154,6 @@ void TiledConvolver::convolve(const cv::Mat& rgb, const ChannelWeights& w, cv::M
         }
       }
     }
-    fftw_free(real);
-    fftw_free(spectrum);
   });
 }
 

@@ -73,7 +73,6 @@ SceneFrame ExrSequenceSource::frame_from(ExrImage image, std::int64_t nonfinite,
   SceneFrame frame;
   frame.rgb = std::move(image.rgb);
   frame.nonfinite = nonfinite;
-  frame.sole_buffer = true;
   frame.index = index;
   frame.time_s = sequence_time(entries_, size_t(index), info_.frames_per_second);
   frame.source = entry.path;

@@ -88,7 +88,6 @@ std::optional<SceneFrame> FloatImageSource::next() {
   f.index = index;
   f.time_s = sequence_time(entries_, size_t(index), info_.frames_per_second);
   f.source = entry.path;
-  f.sole_buffer = true;
   return f;
 }
 

@@ -18,9 +18,6 @@ struct SceneFrame {
   // Pixels with a NaN or infinite channel, when the source counted them
   // (-1: not counted).
   std::int64_t nonfinite = -1;
-  // rgb's buffer was made for this frame alone and no one writes to it
-  // again: a holder may keep a reference to it instead of a copy.
-  bool sole_buffer = false;
 };
 
 // A display-referred frame ready for writing. `linear` is display-linear

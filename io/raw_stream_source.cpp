@@ -45,7 +45,6 @@ std::optional<SceneFrame> RawStreamSource::next() {
   f.index = index_;
   f.time_s = double(index_) / options_.frames_per_second;
   f.source = name_;
-  f.sole_buffer = true;
   ++index_;
   return f;
 }

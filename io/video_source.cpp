@@ -104,7 +104,6 @@ std::optional<SceneFrame> VideoSource::next() {
   f.time_s = v->time_s;
   f.index = v->index;
   f.source = path_ + " frame " + std::to_string(v->index);
-  f.sole_buffer = true;  // converted into a new image above
   return f;
 }
 

@@ -1,5 +1,7 @@
 #include "direct_convolution.hpp"
 
+#include <cmath>
+
 namespace eyestream::test {
 
 glare::ComponentKernels random_kernels(int r, unsigned seed, bool symmetric) {
@@ -15,6 +17,22 @@ glare::ComponentKernels random_kernels(int r, unsigned seed, bool symmetric) {
     *m /= cv::sum(*m)[0];
   }
   return k;
+}
+
+glare::ComponentKernels falloff_kernels(int r) {
+  glare::ComponentKernels k;
+  k.core = cv::Mat::zeros(2 * r + 1, 2 * r + 1, CV_64F);
+  for (int y = -r; y <= r; ++y)
+    for (int x = -r; x <= r; ++x) k.core.at<double>(y + r, x + r) = 1.0 / std::pow(1.0 + std::hypot(x, y), 3);
+  k.core /= cv::sum(k.core)[0];
+  k.inner = k.outer = k.halo[0] = k.halo[1] = k.halo[2] = cv::Mat::zeros(k.core.size(), CV_64F);
+  return k;
+}
+
+glare::PsfWeights core_only() {
+  glare::PsfWeights w;
+  w.core = 1.0, w.inner = w.outer = w.halo = 0.0;
+  return w;
 }
 
 cv::Mat direct_convolution(const cv::Mat& in, const glare::ComponentKernels& k, const glare::PsfWeights& w) {

@@ -14,6 +14,12 @@ namespace eyestream::test {
 // `symmetric` is false.
 glare::ComponentKernels random_kernels(int r, unsigned seed, bool symmetric = true);
 
+// A 2r + 1 square kernel in the core slot that falls as 1 / (1 + d)^3 with
+// the distance d (a PSF's shape), summing to 1; the other slots 0. With
+// weights {core 1}: the headlight tests' kernel.
+glare::ComponentKernels falloff_kernels(int r);
+glare::PsfWeights core_only();
+
 // out(x, y) = sum over sources of in(x', y') k(x - x' + r, y - y' + r) for
 // each channel's combined kernel, zero outside the frame (CV_64FC3).
 cv::Mat direct_convolution(const cv::Mat& in, const glare::ComponentKernels& k, const glare::PsfWeights& w);

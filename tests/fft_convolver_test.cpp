@@ -44,14 +44,8 @@ TEST(FftConvolver, KeepsANightRoadBesideAHeadlight) {
   // A 0.01 cd/m^2 road, one 1e5 cd/m^2 headlight pixel, a 33 px kernel that
   // falls as 1/r^3 (a PSF's shape).
   const int r = 16, w = 320, h = 180;
-  ComponentKernels k;
-  k.core = cv::Mat::zeros(2 * r + 1, 2 * r + 1, CV_64F);
-  for (int y = -r; y <= r; ++y)
-    for (int x = -r; x <= r; ++x) k.core.at<double>(y + r, x + r) = 1.0 / std::pow(1.0 + std::hypot(x, y), 3);
-  k.core /= cv::sum(k.core)[0];
-  k.inner = k.outer = k.halo[0] = k.halo[1] = k.halo[2] = cv::Mat::zeros(k.core.size(), CV_64F);
-  PsfWeights weights;
-  weights.core = 1.0, weights.inner = weights.outer = weights.halo = 0.0;
+  const ComponentKernels k = test::falloff_kernels(r);
+  const PsfWeights weights = test::core_only();
   cv::Mat in(h, w, CV_32FC3, cv::Scalar::all(0.01));
   in.at<cv::Vec3f>(90, 160) = cv::Vec3f::all(1e5f);
   cv::Mat out;

@@ -3,6 +3,8 @@
 // tolerance (retina_stage.hpp: kRestTolerance).
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <opencv2/imgproc.hpp>
 
 #include "pipeline/eye/eye_simulator.hpp"
@@ -84,6 +86,18 @@ TEST(StageSkipping, DimStillFrameSkipsGlareRetinaAndAfterimagesWithinTolerance) 
   EXPECT_GE(idle, 55) << "frames skipped at rest";
   EXPECT_LE(max_linear_difference(on, off), 1e-4);
   EXPECT_LE(max_code_difference(on, off), 1.0);
+}
+
+TEST(StageSkipping, OnePixelChangedInAStillSceneRunsTheGlareAgain) {
+  // The still-scene cache knows the last frame by its digest
+  // (frame_digest.hpp): the smallest change of one pixel of one frame,
+  // one float step, is a new frame, and so is the return to the old one.
+  std::vector<cv::Mat> frames(8, still_scene(30.0f));
+  frames[5] = frames[5].clone();
+  cv::Vec3f& p = frames[5].at<cv::Vec3f>(40, 70);
+  p[1] = std::nextafter(p[1], 1e9f);
+  const Watch on = watch(frames, std::vector<Gaze>(8, Gaze(40, 27)), true);
+  for (size_t i = 1; i < 8; ++i) EXPECT_EQ(on.reports[i].active.glare, i == 5 || i == 6) << "frame " << i;
 }
 
 TEST(StageSkipping, FadingAfterimageKeepsTheRetinaAwakeUntilItIsGone) {

@@ -58,6 +58,12 @@ TEST(TiledConvolver, MatchesTheDirectSumOverSeveralTiles) {
     TiledConvolver(k, size.width, size.height).convolve(in, same_in_every_channel(w), got);
     EXPECT_LT(worst_difference(got, direct_convolution(in, k, w)), 1e-4) << "r " << r;  // values near 100, as float
   }
+  // A frame smaller than one tile's output block.
+  const ComponentKernels k = random_kernels(5, 9);
+  cv::Mat in(23, 37, CV_32FC3), got;
+  cv::RNG(4).fill(in, cv::RNG::UNIFORM, 0.0, 100.0);
+  TiledConvolver(k, in.cols, in.rows).convolve(in, same_in_every_channel(w), got);
+  EXPECT_LT(worst_difference(got, direct_convolution(in, k, w)), 1e-4) << "one partial tile";
 }
 
 TEST(TiledConvolver, UnlitTilesAndChannelsStayDark) {
@@ -85,14 +91,8 @@ TEST(TiledConvolver, KeepsANightRoadBesideAHeadlight) {
   // As the whole-frame engine's test: a 0.01 cd/m^2 road, one 1e5 cd/m^2
   // headlight pixel, a 33 px kernel falling as 1/r^3.
   const int r = 16, width = 640, height = 300;
-  ComponentKernels k;
-  k.core = cv::Mat::zeros(2 * r + 1, 2 * r + 1, CV_64F);
-  for (int y = -r; y <= r; ++y)
-    for (int x = -r; x <= r; ++x) k.core.at<double>(y + r, x + r) = 1.0 / std::pow(1.0 + std::hypot(x, y), 3);
-  k.core /= cv::sum(k.core)[0];
-  k.inner = k.outer = k.halo[0] = k.halo[1] = k.halo[2] = cv::Mat::zeros(k.core.size(), CV_64F);
-  PsfWeights weights;
-  weights.core = 1.0, weights.inner = weights.outer = weights.halo = 0.0;
+  const ComponentKernels k = test::falloff_kernels(r);
+  const PsfWeights weights = test::core_only();
   cv::Mat in(height, width, CV_32FC3, cv::Scalar::all(0.01));
   in.at<cv::Vec3f>(90, 160) = cv::Vec3f::all(1e5f);
   cv::Mat out;

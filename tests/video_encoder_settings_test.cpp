@@ -7,6 +7,7 @@
 // from the settings x264 itself writes into the stream, not by the writer.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <opencv2/imgproc.hpp>

@@ -85,9 +85,6 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
   const double optics_pupil = std::isfinite(recorded) ? recorded : *pupil_;
   if (glare_) {
     glare_->set_moment(frame.time_s, first.x, first.y);
-    // A copy made here, or a frame its source made for itself, is written
-    // by no one again.
-    if (scene.data != frame.rgb.data || frame.sole_buffer) glare_->set_rgb_immutable();
   }
   const cv::Mat retinal =
       glare_ ? glare_->apply(scene, optics_log, surround, optics_pupil, &active.glare, &active.glare_reused) : scene;

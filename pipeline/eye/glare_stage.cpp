@@ -257,25 +257,13 @@ void GlareStage::add_surround(cv::Mat& light, const glare::PsfWeights& w, double
   });
 }
 
-bool GlareStage::Cache::matches(const cv::Mat& rgb, const glare::PsfWeights& w, double s) const {
-  if (scene.empty() || scene.size() != rgb.size() || w.core != weights.core || w.inner != weights.inner ||
-      w.outer != weights.outer || w.halo != weights.halo || s != surround)
-    return false;
-  const size_t row_bytes = size_t(rgb.cols) * rgb.elemSize();
-  for (int y = 0; y < rgb.rows; ++y)
-    if (std::memcmp(rgb.ptr(y), scene.ptr(y), row_bytes) != 0) return false;
-  return true;
+bool GlareStage::Cache::matches(const FrameDigest& rgb, const glare::PsfWeights& w, double s) const {
+  return !retinal.empty() && rgb == scene && w.core == weights.core && w.inner == weights.inner &&
+         w.outer == weights.outer && w.halo == weights.halo && s == surround;
 }
 
-void GlareStage::Cache::keep(const cv::Mat& rgb, bool immutable, const glare::PsfWeights& w, double s,
-                             const cv::Mat& out) {
-  if (immutable && rgb.data != scene.data) {
-    scene = rgb;
-  } else if (!immutable) {
-    if (scene_borrowed) scene.release();  // never copy into a frame the cache only borrowed
-    rgb.copyTo(scene);
-  }
-  scene_borrowed = immutable;
+void GlareStage::Cache::keep(const FrameDigest& rgb, const glare::PsfWeights& w, double s, const cv::Mat& out) {
+  scene = rgb;
   weights = w;
   surround = s;
   retinal = out;
@@ -292,7 +280,6 @@ cv::Mat GlareStage::with_wave_lines(const cv::Mat& light, const glare::PsfWeight
 cv::Mat GlareStage::apply(const cv::Mat& rgb, double adaptation_log, double surround, double pupil_mm,
                           bool* ran, bool* reused) {
   if (reused) *reused = false;
-  const bool immutable = std::exchange(rgb_immutable_, false);
   // The optics' inputs are quantised (1e-4 log10 units, 1e-3 mm: weight
   // changes below 1e-5), so a still frame reuses its glare until they move,
   // and a run resumed from a checkpoint computes exactly what it reused.
@@ -309,14 +296,15 @@ cv::Mat GlareStage::apply(const cv::Mat& rgb, double adaptation_log, double surr
       if (ran) *ran = false;
       return rgb;
     }
-    if (plan_.skip && cache_.matches(rgb, w, surround)) {
+    const FrameDigest digest = plan_.skip ? frame_digest(rgb) : FrameDigest();
+    if (plan_.skip && cache_.matches(digest, w, surround)) {
       if (ran) *ran = false;
       if (reused) *reused = true;
       return with_wave_lines(rgb, w, pupil_mm, cache_.retinal, true);
     }
     if (ran) *ran = true;
     cv::Mat out = spread(rgb, w, surround);
-    if (plan_.skip) cache_.keep(rgb, immutable, w, surround, out);
+    if (plan_.skip) cache_.keep(digest, w, surround, out);
     return with_wave_lines(rgb, w, pupil_mm, out, plan_.skip);
   }
   // The excess over the display peak, with the pixel's colour (Spencer et

@@ -11,6 +11,7 @@
 #include "glare/split_convolver.hpp"
 #include "glare/wave_lines.hpp"
 #include "glare/psf_kernel.hpp"
+#include "pipeline/eye/frame_digest.hpp"
 #include "pipeline/settings/plan.hpp"
 
 namespace eyestream::pipeline {
@@ -36,11 +37,6 @@ class GlareStage {
   // The frame's moment for the wave-optics lines (--flare-model wave): its
   // time and the gaze (frame pixels). Set before apply().
   void set_moment(double time_s, double gaze_x, double gaze_y) { moment_ = {time_s, {gaze_x, gaze_y}}; }
-  // The next apply()'s rgb is a buffer no one writes to again (a frame its
-  // source made for itself): the still-frame cache keeps a reference to it,
-  // not a copy. Set before apply(), which clears it.
-  void set_rgb_immutable() { rgb_immutable_ = true; }
-
   // The error bound of skipping a uniform field (relative).
   static constexpr double kUniformTolerance = 1e-3;
 
@@ -119,19 +115,17 @@ class GlareStage {
   // Per component (core, inner, outer, halo) and channel, the kernel's
   // centre pixel.
   cv::Vec3d centre_[4];
-  // The last full-mode frame, for still scenes.
+  // The last full-mode frame, for still scenes: known by its digest (no
+  // copy of it is kept), with the optics it was seen with and its glare.
   struct Cache {
-    cv::Mat scene, retinal;
-    bool scene_borrowed = false;  // scene is the caller's frame, not a copy
+    FrameDigest scene;
+    cv::Mat retinal;
     glare::PsfWeights weights;
     double surround = 0.0;
-    bool matches(const cv::Mat& rgb, const glare::PsfWeights& w, double surround_cd_m2) const;
-    // `rgb` is held by reference when `immutable`, else copied.
-    void keep(const cv::Mat& rgb, bool immutable, const glare::PsfWeights& w, double surround_cd_m2,
-              const cv::Mat& retinal);
+    bool matches(const FrameDigest& rgb, const glare::PsfWeights& w, double surround_cd_m2) const;
+    void keep(const FrameDigest& rgb, const glare::PsfWeights& w, double surround_cd_m2, const cv::Mat& retinal);
   };
   Cache cache_;
-  bool rgb_immutable_ = false;
 };
 
 }  // namespace eyestream::pipeline

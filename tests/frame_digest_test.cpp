@@ -1,0 +1,34 @@
+// The frame digest (pipeline/eye/frame_digest.hpp) against XXH3 called
+// here on a packed copy of the pixels: the same for a region of a larger
+// image (rows with gaps between them), different for one changed byte, a
+// changed shape of the same bytes, or another type.
+#include <gtest/gtest.h>
+
+#include <xxhash.h>
+
+#include "pipeline/eye/frame_digest.hpp"
+
+namespace eyestream::pipeline {
+namespace {
+
+TEST(FrameDigest, IsXxh3OfThePackedPixelsAndSeesOneByte) {
+  cv::Mat big(40, 64, CV_32FC3);
+  cv::randu(big, 0.0, 1.0);
+  const cv::Mat region = big(cv::Rect(5, 3, 30, 20));
+  ASSERT_FALSE(region.isContinuous());
+  const cv::Mat packed = region.clone();
+  const XXH128_hash_t want = XXH3_128bits(packed.data, packed.total() * packed.elemSize());
+  const FrameDigest d = frame_digest(region);
+  EXPECT_EQ(d.low, want.low64);
+  EXPECT_EQ(d.high, want.high64);
+  EXPECT_TRUE(d == frame_digest(packed));
+  cv::Mat changed = packed.clone();
+  changed.data[1234] ^= 1;
+  EXPECT_FALSE(d == frame_digest(changed));
+  EXPECT_FALSE(d == frame_digest(packed.reshape(3, 30)));  // the same bytes, 30 rows of 20
+  cv::Mat as_ints(packed.size(), CV_32SC3, packed.data);
+  EXPECT_FALSE(d == frame_digest(as_ints));
+}
+
+}  // namespace
+}  // namespace eyestream::pipeline
