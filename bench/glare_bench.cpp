@@ -7,7 +7,7 @@
 
 #include "glare/split_convolver.hpp"
 #include "glare/wave_lines.hpp"
-#include "pipeline/eye/frame_buffer_pool.hpp"
+#include "pipeline/memory/frame_buffer_pool.hpp"
 #include "pipeline/eye/glare_stage.hpp"
 #include "pipeline/settings/quality_presets.hpp"
 

@@ -6,7 +6,7 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "pipeline/eye/frame_buffer_pool.hpp"
+#include "pipeline/memory/frame_buffer_pool.hpp"
 #include "retina/acuity_loss.hpp"
 #include "retina/afterimage_composite.hpp"
 #include "retina/display_encoding.hpp"

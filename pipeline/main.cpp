@@ -11,7 +11,7 @@
 #include "io/source_factory.hpp"
 #include "io/video_concat.hpp"
 #include "io/staged_file.hpp"
-#include "pipeline/eye/frame_buffer_pool.hpp"
+#include "pipeline/memory/frame_buffer_pool.hpp"
 #include "pipeline/bench/bench_chart.hpp"
 #include "pipeline/bench/bench_command.hpp"
 #include "pipeline/bench/peers/bench_peers.hpp"

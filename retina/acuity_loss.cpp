@@ -112,28 +112,22 @@ void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
   // pixel takes: levels beyond it are not made.
   cv::Mat first(image.size(), CV_8U);
   std::vector<std::uint8_t> row_deepest(size_t(image.rows), 0);
-  std::vector<std::uint32_t> row_taken(size_t(image.rows), 0);  // bit k: some pixel of the row takes level k
   cv::parallel_for_(cv::Range(0, image.rows), [&](const cv::Range& rows) {
     for (int y = rows.start; y < rows.end; ++y) {
       const float* lv = level.ptr<float>(y);
       std::uint8_t* k_row = first.ptr<std::uint8_t>(y);
       std::uint8_t deepest = 0;
-      std::uint32_t taken = 0;
       for (int x = 0; x < image.cols; ++x) {
         int k = 0;
         while (k < n && !(lv[x] > tau[size_t(k)])) ++k;
         k_row[x] = std::uint8_t(k);
         deepest = std::max(deepest, k_row[x]);
-        taken |= 1u << k;
       }
       row_deepest[size_t(y)] = deepest;
-      row_taken[size_t(y)] = taken;
     }
   });
   const int deepest = *std::max_element(row_deepest.begin(), row_deepest.end());
   if (deepest == 0) return;
-  std::uint32_t taken = 0;
-  for (std::uint32_t t : row_taken) taken |= t;
   // The levels are made one from the last. A full-resolution level is
   // written to its pixels as soon as the next level is made (the image,
   // level 0, is the first level's source only), so two full-frame levels
@@ -157,11 +151,15 @@ void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
     const double sigma = sigmas_px_[size_t(i - 1)];
     cv::Mat from = last;
     const bool halving = halves(i, f, from.size());
-    // A level no pixel takes, followed by one at the same resolution, is
-    // not made: the next level's blur supplies its variance too, from the
-    // last level made (one sweep instead of two). A level halved next is
-    // made, so that the reduction reads a blurred image.
-    if (!halving && i < deepest && !(taken >> i & 1u) && !halves(i + 1, f, from.size())) {
+    // A level no pixel can take (band i shares the threshold of band
+    // i - 1, so no level lies between them), followed by one at the same
+    // resolution, is not made: the next level's blur supplies its variance
+    // too, from the last level made (one sweep instead of two). Which
+    // levels these are depends on the thresholds alone, never on the
+    // frame, so each level is the same blur of the image in every frame.
+    // A level halved next is made, so that the reduction reads a blurred
+    // image.
+    if (!halving && i < deepest && !(tau_[size_t(i)] < tau_[size_t(i - 1)]) && !halves(i + 1, f, from.size())) {
       factor[size_t(i)] = f;
       continue;
     }

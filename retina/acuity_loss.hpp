@@ -86,8 +86,10 @@ class AcuityLoss {
   cv::Mat level(const cv::Mat& rho, double t_s, double gaze_x = 0.0, double gaze_y = 0.0, int factor = 1) const;
 
   // Applies the loss to `image` (CV_32FC3) in place for a level map from
-  // level() at the image's size. Only the blur levels some pixel takes are
-  // made.
+  // level() at the image's size. Levels beyond the coarsest a pixel
+  // takes, and those no pixel can take (bands sharing a threshold) before
+  // a level of the same resolution, are not made; each level made is the
+  // same blur of the image whichever others the frame takes.
   void apply(cv::Mat& image, const cv::Mat& level) const;
 
  private:

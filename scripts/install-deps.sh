@@ -12,7 +12,7 @@ packages=(
   libeigen3-dev libfftw3-dev
   libdeflate-dev  # inflates OpenEXR's ZIP blocks ten times faster than zlib (io/zlib_uncompress.cpp)
   libcli11-dev nlohmann-json3-dev
-  libxxhash-dev  # the glare stage knows a still scene's last frame by its XXH3 digest, not a 25 MB copy (pipeline/eye/frame_digest.hpp)
+  libxxhash-dev  # the glare stage knows a still scene's last frame by its XXH3 digest, not a 25 MB copy (pipeline/memory/frame_digest.hpp)
   libgtest-dev libgmock-dev libbenchmark-dev
   zlib1g-dev  # uncompress's declaration (io/zlib_uncompress.cpp); the tests check PNG chunk CRCs with zlib (an independent CRC-32)
   python3-dev pybind11-dev python3-numpy  # the Python module (python/) and its tests

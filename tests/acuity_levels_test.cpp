@@ -1,9 +1,14 @@
 // The blur levels of the acuity loss (retina/acuity_loss.hpp) against
 // OpenCV's GaussianBlur: a pixel whose first kept band is k takes the image
-// blurred by sigma_(k-1), whether or not the finer levels between were
-// made (a level no pixel takes is skipped and the next blur supplies its
-// variance), and pixels that keep every band are left as they were.
+// blurred to sigma_(k-1): the first level a pixel can take is one blur of
+// the image (the finer ones, whose bands share a threshold with it, are not
+// made), each deeper one the last blurred by the variance it lacks; pixels that keep every band are left as they
+// were. With the next level's pixels beside them, under the presets'
+// reduced levels too, each pixel's level is the same: what a level holds
+// does not depend on which others the frame takes.
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include <opencv2/imgproc.hpp>
 
@@ -22,29 +27,60 @@ cv::Mat halves_map(const AcuityLoss& loss, cv::Size size, int k) {
   return level;
 }
 
-TEST(AcuityLevels, APixelAtBandKTakesTheImageBlurredBySigmaKMinusOne) {
+TEST(AcuityLevels, APixelAtBandKTakesTheImageBlurredToSigmaKMinusOne) {
   AcuityParams p;  // every level at full resolution
   const AcuityLoss loss(p, 64.0, 1);
   const cv::Size size(160, 96);
   cv::Mat image(size, CV_32FC3);
   cv::randu(image, 0.0, 1.0);
-  int tested = 0;
-  for (int k : {1, 2, 3, 4, 5}) {
-    if (!(loss.thresholds()[size_t(k)] < loss.thresholds()[size_t(k - 1)])) continue;  // bands sharing a threshold
-    ++tested;
+  ASSERT_EQ(loss.thresholds()[0], loss.thresholds()[2]);  // bands 0 to 2 share a threshold at 64 px/deg
+  ASSERT_LT(loss.thresholds()[3], loss.thresholds()[2]);
+  for (int k : {3, 4, 5}) {
     cv::Mat out = image.clone();
     loss.apply(out, halves_map(loss, size, k));
-    const double sigma = loss.sigmas_px()[size_t(k - 1)];
+    // The first level a pixel can take is one blur of the image by its
+    // sigma; each deeper one, the last blurred by what its variance lacks.
+    const std::vector<double>& sigma = loss.sigmas_px();
+    const int first_takeable = 3;
     cv::Mat want;
-    if (sigma >= 0.19)
-      cv::GaussianBlur(image, want, cv::Size(0, 0), sigma, sigma, cv::BORDER_REPLICATE);
-    else
-      want = image.clone();  // a blur under 0.19 px is a copy (acuity_loss.cpp)
+    cv::GaussianBlur(image, want, cv::Size(0, 0), sigma[size_t(first_takeable - 1)],
+                     sigma[size_t(first_takeable - 1)], cv::BORDER_REPLICATE);
+    for (int j = first_takeable; j < k; ++j) {
+      const double extra = std::sqrt(sigma[size_t(j)] * sigma[size_t(j)] - sigma[size_t(j - 1)] * sigma[size_t(j - 1)]);
+      cv::GaussianBlur(want, want, cv::Size(0, 0), extra, extra, cv::BORDER_REPLICATE);
+    }
     const cv::Rect left(0, 0, size.width / 2, size.height), right(size.width / 2, 0, size.width / 2, size.height);
-    EXPECT_LT(cv::norm(out(left), want(left), cv::NORM_INF), 2e-6) << "k " << k << ", sigma " << sigma;
+    EXPECT_LT(cv::norm(out(left), want(left), cv::NORM_INF), 2e-6) << "k " << k;
     EXPECT_EQ(cv::norm(out(right), image(right), cv::NORM_INF), 0.0) << "k " << k;
   }
-  EXPECT_GE(tested, 3) << "bands 3 to 5 have thresholds of their own at 64 px/deg";
+}
+
+TEST(AcuityLevels, ALevelIsTheSameWhicheverOthersTheFrameTakes) {
+  // Thirds at bands 3, 4 and 5 (levels chained and, under fast and
+  // balanced, held reduced) against each band alone over the whole image.
+  const cv::Size size(192, 96);
+  cv::Mat image(size, CV_32FC3);
+  cv::randu(image, 0.0, 1.0);
+  for (double pyramid : {0.0, 1.5, 6.0}) {
+    AcuityParams p;
+    p.pyramid_from_px = pyramid;
+    const AcuityLoss loss(p, 64.0, 1);
+    const std::vector<double>& tau = loss.thresholds();
+    cv::Mat mixed_level(size, CV_32F);
+    cv::Mat mixed = image.clone();
+    for (int third = 0; third < 3; ++third) {
+      const int k = 3 + third;
+      mixed_level(cv::Rect(third * 64, 0, 64, size.height)) = float(0.5 * (tau[size_t(k - 1)] + tau[size_t(k)]));
+    }
+    loss.apply(mixed, mixed_level);
+    for (int third = 0; third < 3; ++third) {
+      const int k = 3 + third;
+      cv::Mat alone = image.clone();
+      loss.apply(alone, cv::Mat(size, CV_32F, cv::Scalar(0.5 * (tau[size_t(k - 1)] + tau[size_t(k)]))));
+      const cv::Rect r(third * 64, 0, 64, size.height);
+      EXPECT_EQ(cv::norm(mixed(r), alone(r), cv::NORM_INF), 0.0) << "band " << k << ", pyramid " << pyramid;
+    }
+  }
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// The frame digest (pipeline/eye/frame_digest.hpp) against XXH3 called
+// The frame digest (pipeline/memory/frame_digest.hpp) against XXH3 called
 // here on a packed copy of the pixels: the same for a region of a larger
 // image (rows with gaps between them), different for one changed byte, a
 // changed shape of the same bytes, or another type.
@@ -6,7 +6,7 @@
 
 #include <xxhash.h>
 
-#include "pipeline/eye/frame_digest.hpp"
+#include "pipeline/memory/frame_digest.hpp"
 
 namespace eyestream::pipeline {
 namespace {

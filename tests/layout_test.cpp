@@ -45,7 +45,7 @@ TEST(Layout, EveryFolderIncludesOnlyItsOwnFloorAndThoseBelow) {
   // include one another.
   const std::map<std::string, int> rank = {
       {"io", 0},           {"retina", 0},         {"glare", 0},       {"samples", 1},
-      {"pipeline/geometry", 2}, {"pipeline/settings", 3}, {"pipeline/eye", 4}, {"pipeline/api", 5},
+      {"pipeline/geometry", 2}, {"pipeline/memory", 2}, {"pipeline/settings", 3}, {"pipeline/eye", 4}, {"pipeline/api", 5},
       {"pipeline/report", 6},  {"pipeline/preview", 7},  {"pipeline/run", 8},  {"pipeline/bench", 9},
       {"pipeline/tools", 10},  {"pipeline/library", 11}, {"pipeline", 12}};
   int checked = 0;

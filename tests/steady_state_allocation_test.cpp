@@ -11,7 +11,7 @@
 
 #include "pipeline/api/eye_access.hpp"
 #include "pipeline/bench/bench_scene.hpp"
-#include "pipeline/eye/frame_buffer_pool.hpp"
+#include "pipeline/memory/frame_buffer_pool.hpp"
 #include "pipeline/settings/quality_presets.hpp"
 #include "retina/display_encoding.hpp"
 #include "tests/counting_malloc.hpp"

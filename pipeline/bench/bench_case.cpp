@@ -2,7 +2,7 @@
 
 #include "pipeline/api/eye_access.hpp"
 #include "pipeline/bench/peak_memory.hpp"
-#include "pipeline/eye/frame_buffer_pool.hpp"
+#include "pipeline/memory/frame_buffer_pool.hpp"
 #include "retina/display_encoding.hpp"
 
 namespace eyestream::pipeline {

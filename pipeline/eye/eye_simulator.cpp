@@ -1,6 +1,6 @@
 #include "pipeline/eye/eye_simulator.hpp"
 
-#include "pipeline/eye/frame_buffer_pool.hpp"
+#include "pipeline/memory/frame_buffer_pool.hpp"
 
 #include <cmath>
 #include <optional>

@@ -11,7 +11,7 @@
 #include "glare/split_convolver.hpp"
 #include "glare/wave_lines.hpp"
 #include "glare/psf_kernel.hpp"
-#include "pipeline/eye/frame_digest.hpp"
+#include "pipeline/memory/frame_digest.hpp"
 #include "pipeline/settings/plan.hpp"
 
 namespace eyestream::pipeline {

@@ -22,7 +22,7 @@
 #include "io/sink_factory.hpp"
 #include "io/source_factory.hpp"
 #include "io/staged_file.hpp"
-#include "pipeline/eye/frame_buffer_pool.hpp"
+#include "pipeline/memory/frame_buffer_pool.hpp"
 #include "pipeline/run/output_paths.hpp"
 #include "pipeline/run/checkpoint.hpp"
 #include "pipeline/run/interrupts.hpp"
@@ -266,7 +266,15 @@ RunSummary run(const Settings& s) {
     if (s.verbose) log_frame(*current, main_report);
     summary.frames += written;
     progress.frame_done();
-    current = times_known ? source->next() : std::move(next);
+    if (times_known) {
+      // The frame is let go before the next is taken (the decoder may then
+      // start the one after), and none is decoded past --end-frame.
+      const bool last = s.end_frame > 0 && current->index + 1 >= s.end_frame;
+      current.reset();
+      if (!last) current = source->next();
+    } else {
+      current = std::move(next);
+    }
   }
   if (summary.frames == 0 && summary.interrupted_by) throw Interrupted(summary.interrupted_by);
   if (summary.frames == 0)

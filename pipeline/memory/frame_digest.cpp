@@ -1,4 +1,4 @@
-#include "pipeline/eye/frame_digest.hpp"
+#include "pipeline/memory/frame_digest.hpp"
 
 #include <xxhash.h>
 

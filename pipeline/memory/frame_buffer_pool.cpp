@@ -1,4 +1,4 @@
-#include "pipeline/eye/frame_buffer_pool.hpp"
+#include "pipeline/memory/frame_buffer_pool.hpp"
 
 #include "glare/huge_pages.hpp"
 
