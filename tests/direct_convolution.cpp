@@ -1,5 +1,6 @@
 #include "direct_convolution.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace eyestream::test {
@@ -33,6 +34,23 @@ glare::PsfWeights core_only() {
   glare::PsfWeights w;
   w.core = 1.0, w.inner = w.outer = w.halo = 0.0;
   return w;
+}
+
+cv::Mat road_with_headlight(int width, int height) {
+  cv::Mat in(height, width, CV_32FC3, cv::Scalar::all(0.01));
+  in.at<cv::Vec3f>(90, 160) = cv::Vec3f::all(1e5f);
+  return in;
+}
+
+double worst_road_error(const cv::Mat& out, int r) {
+  const cv::Mat want =
+      direct_convolution(cv::Mat(out.size(), CV_32FC3, cv::Scalar::all(0.01)), falloff_kernels(r), core_only());
+  double worst = 0;
+  for (int y = 0; y < out.rows; y += 7)
+    for (int x = 0; x < out.cols; x += 7)
+      if (std::max(std::abs(x - 160), std::abs(y - 90)) > r)
+        worst = std::max(worst, std::abs(double(out.at<cv::Vec3f>(y, x)[1]) - want.at<cv::Vec3d>(y, x)[1]));
+  return worst;
 }
 
 cv::Mat direct_convolution(const cv::Mat& in, const glare::ComponentKernels& k, const glare::PsfWeights& w) {

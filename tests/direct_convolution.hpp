@@ -20,6 +20,14 @@ glare::ComponentKernels random_kernels(int r, unsigned seed, bool symmetric = tr
 glare::ComponentKernels falloff_kernels(int r);
 glare::PsfWeights core_only();
 
+// The headlight tests' scene: a 0.01 cd/m^2 road, one 1e5 cd/m^2 headlight
+// pixel at (160, 90). And the largest error of an engine's `out` for it
+// (convolved with falloff_kernels(r), core_only()) beyond the headlight's
+// square reach, in green, at every 7th row and column, against the direct
+// sum of the road alone: only rounding can put the headlight there.
+cv::Mat road_with_headlight(int width, int height);
+double worst_road_error(const cv::Mat& out, int r);
+
 // out(x, y) = sum over sources of in(x', y') k(x - x' + r, y - y' + r) for
 // each channel's combined kernel, zero outside the frame (CV_64FC3).
 cv::Mat direct_convolution(const cv::Mat& in, const glare::ComponentKernels& k, const glare::PsfWeights& w);
