@@ -100,7 +100,7 @@ SplitConvolver::SplitConvolver(int width, int height, double ppd, int factor, co
     if (!with_centre) k->at<double>(near_.centre()) = 0.0;
   }
   // Tiles need less memory (their spectra and buffers are a tile's size,
-  // 51 + 17 MB less at 1080p and factor 2) and took the same time as the
+  // 50 + 17 MB less at 1080p and factor 2) and took the same time as the
   // whole frame where a tile's window is mostly output (factor 2: 0.77),
   // 6 ms more at factor 4 (0.56; docs/performance.md).
   if (tile_output_share(radius_) >= 0.7)
