@@ -146,8 +146,8 @@ cv::Mat SplitConvolver::convolve(const cv::Mat& rgb, const ChannelWeights& w) co
 
 cv::Mat SplitConvolver::spread_near(const cv::Mat& rgb, const ChannelWeights& w) const {
   // Dense (the whole image, or many lights): by FFT (over tiles or the
-  // whole frame); decided as soon as the sources' direct cost exceeds the
-  // whole-frame transform's.
+  // whole frame); decided as soon as the sources' direct cost exceeds
+  // half a whole-frame transform's (dense_from_).
   const int r = radius_;
   std::vector<Source> sources;  // row by row: sorted by y
   cv::Mat out;

@@ -221,6 +221,7 @@ RunSummary run(const Settings& s) {
   if (overlap_io(s)) source = std::make_unique<io::PrefetchSource>(std::move(source), 1);
   const std::int64_t first_processed =
       std::max<std::int64_t>(0, s.start_frame - std::int64_t(std::ceil(s.preroll_s * info.frames_per_second)));
+  const bool times_known = source->knows_times();  // a property of the source, for the whole sequence
   std::optional<io::SceneFrame> current = source->next();
   const std::int64_t skip_to = std::max(first_processed, resume_from);
   while (current && current->index < skip_to) current = source->next();  // before the pre-roll or the checkpoint
@@ -235,7 +236,6 @@ RunSummary run(const Settings& s) {
       }
       break;
     }
-    const bool times_known = source->knows_times();
     std::optional<io::SceneFrame> next;
     if (!times_known) next = source->next();
     const std::optional<double> next_time = times_known ? source->time_of(current->index + 1)
