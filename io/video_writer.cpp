@@ -107,10 +107,14 @@ struct VideoWriter::Impl {
     // depended on what lay beside them (the thread count, the timing): on a
     // CPU with AVX-512, x264 is held to its AVX2 kernels, with which the
     // bytes depend on the frames alone (tests/end_to_end_test.cpp).
+    std::string x264;
 #if defined(__x86_64__) || defined(__i386__)
-    if (options.codec != "hevc" && __builtin_cpu_supports("avx512f"))
-      av_dict_set(&opts, "x264-params", "asm=avx2,fma3,bmi2,lzcnt", 0);
+    if (options.codec != "hevc" && __builtin_cpu_supports("avx512f")) x264 = "asm=avx2,fma3,bmi2,lzcnt";
 #endif
+    // Sliced threads: each thread codes a slice of every frame, so x264
+    // holds one frame in work instead of one per thread.
+    if (options.codec != "hevc" && options.sliced_threads) x264 += std::string(x264.empty() ? "" : ":") + "sliced-threads=1";
+    if (!x264.empty()) av_dict_set(&opts, "x264-params", x264.c_str(), 0);
     rc = avcodec_open2(codec, encoder, &opts);
     av_dict_free(&opts);
     if (rc < 0) fail(std::string("cannot open the ") + encoder_name + " encoder", rc);

@@ -22,6 +22,7 @@ struct VideoOptions {
   int lookahead = -1;             // frames x264's rate control looks ahead (H.264 only); -1: the speed preset's
   std::string preset = "medium";  // encoder speed preset
   int encoder_threads = 2;        // fixed, so output bytes do not depend on --threads
+  bool sliced_threads = false;    // H.264: the threads code slices of each frame, not frames (less memory)
   std::string stream_format = "mkv";  // container on standard output (path "-"): mkv or mp4 (fragmented)
 };
 

@@ -12,6 +12,7 @@
 #include "io/video_concat.hpp"
 #include "io/staged_file.hpp"
 #include "pipeline/memory/frame_buffer_pool.hpp"
+#include "pipeline/memory/malloc_arenas.hpp"
 #include "pipeline/bench/bench_chart.hpp"
 #include "pipeline/bench/bench_command.hpp"
 #include "pipeline/bench/peers/bench_peers.hpp"
@@ -48,6 +49,7 @@ int fail(ExitCode code, const std::string& message) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  limit_malloc_arenas();
   reuse_frame_buffers();
   CLI::App app{
       "eyestream: filters HDR video through a model of one viewer's eye and writes what that viewer "

@@ -63,10 +63,79 @@ void departure_pass(cv::Mat& state, const cv::Mat& rest, T k, const cv::Mat* dep
   });
 }
 
+// The horizontal sweep of departure_pass's first pass for one row: the
+// row's departure state - k rest, borders replicated, three taps across.
+template <typename T>
+void across_row(const cv::Mat& state, const cv::Mat& rest, T k, T a, int y, T* d, T* o) {
+  const int n = state.cols * 3;
+  const T centre = T(1) - 2 * a;
+  const T* s = state.ptr<T>(y);
+  const T* b = rest.ptr<T>(y);
+  for (int i = 0; i < n; ++i) d[i + 3] = s[i] - k * b[i];
+  for (int c = 0; c < 3; ++c) d[c] = d[c + 3], d[n + 3 + c] = d[n + c];
+  for (int i = 0; i < n; ++i) o[i] = a * d[i] + centre * d[i + 3] + a * d[i + 6];
+}
+
+// departure_pass as the only and last pass, writing the state in place
+// with no grid-sized temporary: each stripe of rows keeps the horizontal
+// sweep of three rows in a ring, made before the row it comes from is
+// overwritten; the rows just beyond each stripe, which a neighbouring
+// stripe may overwrite first, are swept beforehand. The same arithmetic
+// as departure_pass, so the same bytes.
+template <typename T>
+void departure_pass_in_place(cv::Mat& state, const cv::Mat& rest, T k, T a, T hi) {
+  const int rows = state.rows, n = state.cols * 3;
+  const T centre = T(1) - 2 * a;
+  const int stripes = std::min(rows, 4 * std::max(1, cv::getNumThreads()));
+  const auto first_row = [&](int s) { return int(std::int64_t(rows) * s / stripes); };
+  // Per stripe, the sweep of the row above it and of the row below it.
+  cv::Mat beyond(2 * stripes, n, state.type());
+  cv::parallel_for_(cv::Range(0, stripes), [&](const cv::Range& r) {
+    std::vector<T> d(size_t(n) + 6);
+    for (int s = r.start; s < r.end; ++s) {
+      across_row(state, rest, k, a, std::max(first_row(s) - 1, 0), d.data(), beyond.ptr<T>(2 * s));
+      across_row(state, rest, k, a, std::min(first_row(s + 1), rows - 1), d.data(), beyond.ptr<T>(2 * s + 1));
+    }
+  });
+  cv::parallel_for_(cv::Range(0, stripes), [&](const cv::Range& r) {
+    std::vector<T> d(size_t(n) + 6);
+    cv::Mat ring(3, n, state.type());  // from the buffer pool, whichever thread runs the stripe
+    for (int s = r.start; s < r.end; ++s) {
+      const int y0 = first_row(s), y1 = first_row(s + 1);
+      if (y0 >= y1) continue;
+      T* slot[3] = {ring.ptr<T>(0), ring.ptr<T>(1), ring.ptr<T>(2)};  // up, mid, down
+      across_row(state, rest, k, a, y0, d.data(), slot[1]);
+      const T* up = y0 > 0 ? beyond.ptr<T>(2 * s) : slot[1];
+      for (int y = y0; y < y1; ++y) {
+        const T* mid = slot[1];
+        const T* down;
+        if (y + 1 < y1) {
+          across_row(state, rest, k, a, y + 1, d.data(), slot[2]);
+          down = slot[2];
+        } else {
+          down = y + 1 < rows ? beyond.ptr<T>(2 * s + 1) : mid;
+        }
+        T* o = state.ptr<T>(y);
+        const T* b = rest.ptr<T>(y);
+        for (int i = 0; i < n; ++i)
+          o[i] = std::clamp(k * b[i] + a * up[i] + centre * mid[i] + a * down[i], T(0), hi);
+        // The ring turns: this row's sweep is the next one's up.
+        std::swap(slot[0], slot[1]);
+        std::swap(slot[1], slot[2]);
+        up = slot[0];
+      }
+    }
+  });
+}
+
 template <typename T>
 void diffuse_departure_as(cv::Mat& state, const cv::Mat& rest, double rest_scale, double variance, double hi) {
   const int passes = int(std::ceil(variance / 0.5));
   const T a = T(variance / passes / 2);
+  if (passes == 1) {
+    departure_pass_in_place<T>(state, rest, T(rest_scale), a, T(hi));
+    return;
+  }
   cv::Mat across(state.size(), state.type()), departure[2];
   for (int p = 0; p < passes; ++p) {
     const cv::Mat* from = p == 0 ? nullptr : &departure[(p - 1) % 2];

@@ -164,6 +164,27 @@ void RetinaState::step(const cv::Mat& lms, const ToneCurve& curve, double dt_s) 
     step_sites<float>(lms, curve, params_, c_max_, dt_s, bleached_rest_, response_, bleached_, deficit_);
 }
 
+void RetinaState::release_rest() {
+  bleached_rest_.release();
+  response_.release();
+}
+
+RestOfStimulus RetinaState::rest_for(const cv::Mat& lms, const ToneCurve& curve) const {
+  CV_Assert(lms.size() == bleached_.size() && lms.type() == bleached_.type());
+  RestOfStimulus rest;
+  if (is_double(lms))
+    equilibrium<double>(lms, curve, params_, rest.bleached, rest.response);
+  else
+    equilibrium<float>(lms, curve, params_, rest.bleached, rest.response);
+  return rest;
+}
+
+void RetinaState::recall_rest(const cv::Mat& lms, const ToneCurve& curve) {
+  RestOfStimulus rest = rest_for(lms, curve);
+  bleached_rest_ = rest.bleached;
+  response_ = rest.response;
+}
+
 void RetinaState::soften(double variance_sites2) {
   if (!(variance_sites2 > 0.0) || response_.empty()) return;
   diffuse_departure(bleached_, bleached_rest_, 1.0, variance_sites2, 1.0);

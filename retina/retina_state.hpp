@@ -27,6 +27,11 @@ struct AfterimageMaps {
   float largest = 0.0f;  // the largest |value| in either map
 };
 
+// A stimulus's equilibrium bleaching B_inf and response R per site and cone.
+struct RestOfStimulus {
+  cv::Mat bleached, response;
+};
+
 class RetinaState {
  public:
   // `double_precision` keeps the state in CV_64F (reference mode).
@@ -66,8 +71,18 @@ class RetinaState {
   double calcium_max() const { return c_max_; }
   cv::Mat calcium() const;  // C = C_max - D, LMS
 
+  // B_inf and R of the last stimulus are held from step() (or rest())
+  // until release_rest(); soften() and the afterimages need them.
+  // recall_rest() makes them again from that stimulus and tone curve, the
+  // same bytes step() made; rest_for() returns them for any stimulus.
+  bool holds_rest() const { return !response_.empty(); }
+  void release_rest();
+  void recall_rest(const cv::Mat& lms, const ToneCurve& curve);
+  RestOfStimulus rest_for(const cv::Mat& lms, const ToneCurve& curve) const;
+
   // The whole state for checkpoints: B, D, B_inf and R (the last two empty
-  // before the first step), and back. restore() takes what save() gave.
+  // before the first step or after release_rest()), and back. restore()
+  // takes what save() gave.
   std::vector<cv::Mat> save() const { return {bleached_, deficit_, bleached_rest_, response_}; }
   void restore(const std::vector<cv::Mat>& mats);
 

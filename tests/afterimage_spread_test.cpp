@@ -46,6 +46,35 @@ TEST(Diffusion, TheFusedDepartureBlurIsTheBlurOfTheDepartureClamped) {
     }
 }
 
+TEST(Diffusion, TheOnePassInPlaceIsTheSameWhateverTheShapeAndThreads) {
+  // One pass writes the state in place by stripes of rows (each sweeping
+  // the rows beyond it first): against the composition with diffuse() on
+  // grids of one row, one column, fewer rows than stripes and many, and the
+  // same bytes on 1, 2 and 3 threads.
+  const int threads_before = cv::getNumThreads();
+  for (const cv::Size size : {cv::Size(1, 1), cv::Size(7, 1), cv::Size(1, 9), cv::Size(5, 2), cv::Size(3, 64),
+                              cv::Size(40, 500)}) {
+    cv::Mat state(size, CV_32FC3), rest(size, CV_32FC3);
+    cv::randu(state, -0.2, 1.2);
+    cv::randu(rest, 0.0, 0.5);
+    cv::Mat want = state - rest * 1.7;
+    retina::diffuse(want, 0.36);
+    want = rest * 1.7 + want;
+    cv::max(want, 0.0, want);
+    cv::min(want, 1.0, want);
+    cv::Mat first;
+    for (int threads : {1, 2, 3}) {
+      cv::setNumThreads(threads);
+      cv::Mat got = state.clone();
+      retina::diffuse_departure(got, rest, 1.7, 0.36, 1.0);
+      EXPECT_LT(cv::norm(got, want, cv::NORM_INF), 1e-6) << size << ", " << threads << " threads";
+      if (first.empty()) first = got;
+      EXPECT_EQ(cv::norm(got, first, cv::NORM_INF), 0.0) << size << ", " << threads << " threads";
+    }
+  }
+  cv::setNumThreads(threads_before);
+}
+
 TEST(Diffusion, AnAbsurdVarianceIsAUniformBlurNotAnError) {
   cv::Mat m(9, 11, CV_32F, cv::Scalar(0));
   m.at<float>(4, 5) = 99.0f;
@@ -90,7 +119,8 @@ double added_blur_deg(double ppd, double fps, const std::string& preset) {
     const double t0 = i / fps, t1 = (i + 1) / fps;
     eye.process({i == 1 ? flash : dark, t0, i, "test"}, {{t0, t1, w / 2.0, h / 2.0, false}});
     if (i < first) continue;
-    const std::vector<cv::Mat> state = eye.retina().state().save();  // B, D, B_inf, R
+    bool started = false;
+    const std::vector<cv::Mat> state = eye.retina().save(started);  // B, D, B_inf, R, ...
     cv::Mat b[3];
     cv::split(state[0] - state[2], b);  // the departure from equilibrium
     if (i == first) before = column_variance(b[0]);

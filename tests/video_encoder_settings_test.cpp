@@ -2,7 +2,9 @@
 // 0 gives none, -1 leaves the speed preset's (x264 veryfast makes them on
 // moving content), and --quality balanced sets 0. Lookahead: --lookahead
 // N makes x264 look N frames ahead, -1 leaves the speed preset's, and
-// balanced sets 5. Both hold fewer frames in x264 (docs/performance.md).
+// balanced sets 5. Sliced threads: --sliced-threads makes each x264 thread
+// code a slice of every frame, and balanced sets it. All three hold fewer
+// frames in x264 (docs/performance.md).
 // The frames' types are read back by FFmpeg's decoder, and the lookahead
 // from the settings x264 itself writes into the stream, not by the writer.
 #include <gtest/gtest.h>
@@ -23,11 +25,13 @@ namespace {
 
 // 30 frames of a bright square crossing a textured field, as `preset` with
 // `b_frames` writes them.
-void write_moving_clip(const std::string& path, const std::string& preset, int b_frames, int lookahead = -1) {
+void write_moving_clip(const std::string& path, const std::string& preset, int b_frames, int lookahead = -1,
+                       bool sliced_threads = false) {
   io::VideoOptions o;
   o.preset = preset;
   o.b_frames = b_frames;
   o.lookahead = lookahead;
+  o.sliced_threads = sliced_threads;
   io::VideoWriter writer(path, o);
   cv::Mat field(128, 192, CV_8UC3);
   cv::randu(field, cv::Scalar::all(40), cv::Scalar::all(120));
@@ -70,15 +74,16 @@ TEST(VideoBFrames, BalancedSetsNoneAndTheOtherPresetsLeaveTheSpeedPresets) {
   }
 }
 
-// The lookahead x264 reports in the settings it writes into the stream
-// (its SEI text, "... rc_lookahead=N ..."); -1 if there is none.
-int reported_lookahead(const std::string& path) {
+// A setting x264 reports in the settings it writes into the stream (its
+// SEI text, "... rc_lookahead=N ..."); -1 if there is none.
+int reported(const std::string& path, const std::string& name) {
   std::ifstream in(path, std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::string key = " rc_lookahead=";
+  const std::string key = " " + name + "=";
   const size_t at = bytes.find(key);
   return at == std::string::npos ? -1 : std::atoi(bytes.c_str() + at + key.size());
 }
+int reported_lookahead(const std::string& path) { return reported(path, "rc_lookahead"); }
 
 TEST(VideoLookahead, TheOptionSetsX264sAndMinusOneLeavesThePresets) {
   test::ScratchDir dir;
@@ -94,6 +99,21 @@ TEST(VideoLookahead, BalancedSetsFiveAndTheOtherPresetsLeaveTheSpeedPresets) {
     pipeline::Settings s;
     pipeline::apply_quality_preset(name, s);
     EXPECT_EQ(s.sink.video.lookahead, std::string(name) == "balanced" ? 5 : -1) << name;
+  }
+}
+
+TEST(VideoSlicedThreads, TheOptionSetsX264sAndBalancedAloneSetsIt) {
+  test::ScratchDir dir;
+  write_moving_clip(dir / "frames.mp4", "veryfast", 0, 5);
+  write_moving_clip(dir / "slices.mp4", "veryfast", 0, 5, true);
+  EXPECT_EQ(reported(dir / "frames.mp4", "sliced_threads"), 0);
+  EXPECT_EQ(reported(dir / "slices.mp4", "sliced_threads"), 1);
+  EXPECT_EQ(reported(dir / "slices.mp4", "threads"), 2) << "two threads, a slice each";
+  EXPECT_EQ(b_frames_in(dir / "slices.mp4"), 0) << "the stream decodes whole";
+  for (const char* name : {"reference", "balanced", "fast"}) {
+    pipeline::Settings s;
+    pipeline::apply_quality_preset(name, s);
+    EXPECT_EQ(s.sink.video.sliced_threads, std::string(name) == "balanced") << name;
   }
 }
 

@@ -86,13 +86,13 @@ struct Eye::Impl {
   }
 
   // The one path through the model, for the API and the command line.
-  io::DisplayFrame step(const io::SceneFrame& scene, const std::vector<pipeline::GazeSegment>& segments) {
+  io::DisplayFrame step(io::SceneFrame scene, const std::vector<pipeline::GazeSegment>& segments) {
     last = pipeline::FrameReport();
     // The target only matters to the report (and its masks are files).
     const cv::Mat mask = plan.report ? target.mask(scene.index) : cv::Mat();
-    io::DisplayFrame shown = eye.process(scene, segments, &last, mask);
-    last_recorded_pupil = plan.pupil_from_gaze ? segments.front().recorded_pupil_mm : NAN;
     index = scene.index + 1;
+    io::DisplayFrame shown = eye.process(std::move(scene), segments, &last, mask);
+    last_recorded_pupil = plan.pupil_from_gaze ? segments.front().recorded_pupil_mm : NAN;
     return shown;
   }
 
@@ -238,11 +238,12 @@ void EyeAccess::set_gaze(Eye& eye, std::shared_ptr<const pipeline::GazeTimeline>
   eye.impl_->recording = std::move(recording);
 }
 
-io::DisplayFrame EyeAccess::process(Eye& eye, const io::SceneFrame& frame, double t1_s) {
+io::DisplayFrame EyeAccess::process(Eye& eye, io::SceneFrame frame, double t1_s) {
   Eye::Impl& e = *eye.impl_;
-  return e.step(frame, e.recording ? e.recording->segments(frame.time_s, t1_s)
-                                   : pipeline::GazeTimeline({}, e.plan.width / 2.0, e.plan.height / 2.0)
-                                         .segments(frame.time_s, t1_s));
+  const std::vector<pipeline::GazeSegment> segments =
+      e.recording ? e.recording->segments(frame.time_s, t1_s)
+                  : pipeline::GazeTimeline({}, e.plan.width / 2.0, e.plan.height / 2.0).segments(frame.time_s, t1_s);
+  return e.step(std::move(frame), segments);
 }
 
 const pipeline::FrameReport& EyeAccess::report(const Eye& eye) { return eye.impl_->last; }

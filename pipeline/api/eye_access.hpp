@@ -24,7 +24,8 @@ struct __attribute__((visibility("hidden"))) EyeAccess {
   static void set_gaze(Eye& eye, std::shared_ptr<const pipeline::GazeTimeline> recording);
   // The source's frame at its own index and time, seen until t1_s; the
   // display-linear image, not encoded. report() then holds its report.
-  static io::DisplayFrame process(Eye& eye, const io::SceneFrame& frame, double t1_s);
+  // A frame moved in is let go of after the glare (EyeSimulator::process).
+  static io::DisplayFrame process(Eye& eye, io::SceneFrame frame, double t1_s);
   static const pipeline::FrameReport& report(const Eye& eye);
   static const pipeline::Plan& plan(const Eye& eye);
   static const pipeline::EyeSimulator& simulator(const Eye& eye);

@@ -34,7 +34,7 @@ double EyeSimulator::patch_log_mean(const retina::LuminanceField& field, double 
                               std::min(0.5 * plan_.patch_deg * ppd[1], most), surround);
 }
 
-io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::vector<GazeSegment>& segments,
+io::DisplayFrame EyeSimulator::process(io::SceneFrame frame, const std::vector<GazeSegment>& segments,
                                        FrameReport* report, const cv::Mat& target_mask) {
   // Non-finite pixels are counted and seen as black; they reach no stage.
   const std::int64_t nonfinite = frame.nonfinite >= 0 ? frame.nonfinite : count_nonfinite(frame.rgb);
@@ -86,9 +86,15 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
   if (glare_) {
     glare_->set_moment(frame.time_s, first.x, first.y);
   }
-  const cv::Mat retinal =
+  cv::Mat retinal =
       glare_ ? glare_->apply(scene, optics_log, surround, optics_pupil, &active.glare, &active.glare_reused) : scene;
   times.glare_ms = lap_ms(clock);
+  // The later stages read the retinal image; only the report reads the
+  // scene again. Let go of it (25 MB at 1080p) while they run.
+  if (retinal.data != scene.data && !plan_.report) {
+    scene.release();
+    frame.rgb.release();
+  }
 
   // Global adaptation: one exact step per gaze segment (Jacobs et al. 2015
   // eq. 3) toward the log of the mean retinal luminance around the gaze;
@@ -112,19 +118,22 @@ io::DisplayFrame EyeSimulator::process(const io::SceneFrame& frame, const std::v
   retina_->advance(retinal, segments, adapted, surround);
   active.retina = retina_->stepped();
   times.retina_ms = lap_ms(clock);
+  retina_->prepare_afterimages(last.x, last.y);  // (the afterimages' time)
+  const double drawing_ms = lap_ms(clock);
 
   io::DisplayFrame out;
   out.index = frame.index;
   out.time_s = frame.time_s;
   const retina::ToneCurve curve(*adaptation_, plan_.tone);
   cv::Mat seen;
-  if (last.eye_closed)
-    seen = cv::Mat::zeros(frame.rgb.size(), CV_32FC3);
-  else
-    mesopic_->render(retinal, curve, *adaptation_, frame.time_s, seen, &active, last.x, last.y, field.luminance());
+  if (last.eye_closed) {
+    seen = cv::Mat::zeros(retinal.size(), CV_32FC3);
+    retinal.release();  // (as render() does once it has tone-mapped it)
+  } else
+    mesopic_->render(std::move(retinal), curve, *adaptation_, frame.time_s, seen, &active, last.x, last.y, field.luminance());
   times.mesopic_ms = lap_ms(clock);
-  active.afterimages = retina_->composite(seen, last.x, last.y, out.linear);
-  times.afterimage_ms = lap_ms(clock);
+  active.afterimages = retina_->composite(seen, out.linear);
+  times.afterimage_ms = drawing_ms + lap_ms(clock);
   if (report) {
     report->adaptation_log = *adaptation_;
     report->target_log = target;

@@ -62,7 +62,11 @@ class EyeSimulator {
   // seen as black; they never enter the state.
   // Returns DisplayFrame::linear; encoding is the caller's (preview.hpp).
   // `target_mask` (CV_8U, may be empty) marks the target the report measures.
-  io::DisplayFrame process(const io::SceneFrame& frame, const std::vector<GazeSegment>& segments,
+  // The frame is taken by value: once the glare has made the retinal image,
+  // the eye lets go of the scene (unless the report measures it), so a
+  // caller that hands over its only reference (std::move) frees the
+  // scene's memory for the rest of the frame's stages.
+  io::DisplayFrame process(io::SceneFrame frame, const std::vector<GazeSegment>& segments,
                            FrameReport* report = nullptr, const cv::Mat& target_mask = cv::Mat());
 
   double adaptation_log() const { return adaptation_.value_or(plan_.dark_log); }

@@ -163,7 +163,7 @@ cv::Mat GlareStage::in_frame_share(const cv::Mat& ones, const glare::ChannelWeig
 
 cv::Mat GlareStage::moved_light(const cv::Mat& rgb, const glare::ChannelWeights& w) const {
   const FrameProjection& p = *plane_;
-  const cv::Mat flux = p.to_plane_flux(to_glare_frame(rgb));
+  cv::Mat flux = p.to_plane_flux(to_glare_frame(rgb));
   cv::Mat scattered = spread_plane(flux, w);
   if (plan_.glare.gaussian) {  // a blur keeps its centre: take it out (the same share whatever the weights)
     const cv::Vec3f kept = kept_share(w[0]);
@@ -172,6 +172,7 @@ cv::Mat GlareStage::moved_light(const cv::Mat& rgb, const glare::ChannelWeights&
     scattered -= centre;
     scattered = cv::max(scattered, 0.0);
   }
+  flux.release();  // one plane fewer held while the frame image is made
   return p.to_frame_image(scattered);
 }
 
@@ -257,16 +258,21 @@ void GlareStage::add_surround(cv::Mat& light, const glare::PsfWeights& w, double
   });
 }
 
+bool GlareStage::Cache::seen(const FrameDigest& rgb, const glare::PsfWeights& w, double s) const {
+  return rgb == scene && w.core == weights.core && w.inner == weights.inner && w.outer == weights.outer &&
+         w.halo == weights.halo && s == surround;
+}
+
 bool GlareStage::Cache::matches(const FrameDigest& rgb, const glare::PsfWeights& w, double s) const {
-  return !retinal.empty() && rgb == scene && w.core == weights.core && w.inner == weights.inner &&
-         w.outer == weights.outer && w.halo == weights.halo && s == surround;
+  return !retinal.empty() && seen(rgb, w, s);
 }
 
 void GlareStage::Cache::keep(const FrameDigest& rgb, const glare::PsfWeights& w, double s, const cv::Mat& out) {
+  const bool again = seen(rgb, w, s);
   scene = rgb;
   weights = w;
   surround = s;
-  retinal = out;
+  retinal = again ? out : cv::Mat();
 }
 
 cv::Mat GlareStage::with_wave_lines(const cv::Mat& light, const glare::PsfWeights& w, double pupil_mm, cv::Mat retinal,
@@ -303,6 +309,7 @@ cv::Mat GlareStage::apply(const cv::Mat& rgb, double adaptation_log, double surr
       return with_wave_lines(rgb, w, pupil_mm, cache_.retinal, true);
     }
     if (ran) *ran = true;
+    cache_.retinal.release();  // not this frame's: no need to hold it through the spread
     cv::Mat out = spread(rgb, w, surround);
     if (plan_.skip) cache_.keep(digest, w, surround, out);
     return with_wave_lines(rgb, w, pupil_mm, out, plan_.skip);

@@ -116,12 +116,18 @@ class GlareStage {
   // centre pixel.
   cv::Vec3d centre_[4];
   // The last full-mode frame, for still scenes: known by its digest (no
-  // copy of it is kept), with the optics it was seen with and its glare.
+  // copy of it is kept), with the optics it was seen with, and its glare
+  // once the frame has come twice (a still scene's second frame): moving
+  // footage keeps no glare image (25 MB at 1080p) through the frame's later
+  // stages, and a still scene runs its glare twice instead of once.
   struct Cache {
     FrameDigest scene;
     cv::Mat retinal;
     glare::PsfWeights weights;
     double surround = 0.0;
+    // The last frame, with the same optics (its glare kept or not).
+    bool seen(const FrameDigest& rgb, const glare::PsfWeights& w, double surround_cd_m2) const;
+    // seen(), with the glare kept.
     bool matches(const FrameDigest& rgb, const glare::PsfWeights& w, double surround_cd_m2) const;
     void keep(const FrameDigest& rgb, const glare::PsfWeights& w, double surround_cd_m2, const cv::Mat& retinal);
   };

@@ -42,7 +42,7 @@ cv::Mat MesopicStage::level_of(const cv::Mat& floored, double adaptation_log, do
   return level;
 }
 
-void MesopicStage::render(const cv::Mat& rgb, const retina::ToneCurve& curve, double adaptation_log, double time_s,
+void MesopicStage::render(cv::Mat rgb, const retina::ToneCurve& curve, double adaptation_log, double time_s,
                           cv::Mat& out, StageActivity* activity, double gaze_x, double gaze_y,
                           const cv::Mat& given_floored) const {
   retina::MesopicColour colour;
@@ -79,6 +79,7 @@ void MesopicStage::render(const cv::Mat& rgb, const retina::ToneCurve& curve, do
     retina::tone_map(rgb, curve, colour, out);
   else
     retina::tone_map(rgb, curve, out);
+  rgb.release();
   if (blur) acuity_->apply(out, level_of(floored, adaptation_log, time_s, gaze_x, gaze_y));
   if (activity) {
     activity->mesopic = tinted;

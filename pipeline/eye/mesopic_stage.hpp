@@ -35,7 +35,9 @@ class MesopicStage {
   // at (gaze_x, gaze_y).
   // `floored` (optional): rgb's luminance floored at the plan's dark
   // level, when the caller has it (retina::LuminanceField::luminance()).
-  void render(const cv::Mat& rgb, const retina::ToneCurve& curve, double adaptation_log, double time_s, cv::Mat& out,
+  // `rgb` is let go of once tone-mapped: a caller that moves its only
+  // reference in frees it for the acuity loss's levels.
+  void render(cv::Mat rgb, const retina::ToneCurve& curve, double adaptation_log, double time_s, cv::Mat& out,
               StageActivity* activity = nullptr, double gaze_x = 0.0, double gaze_y = 0.0,
               const cv::Mat& floored = cv::Mat()) const;
 

@@ -89,9 +89,14 @@ RetinaStage::RetinaStage(const Plan& plan)
       grid_(int(std::ceil(plan.projection->retina_reach().width)), int(std::ceil(plan.projection->retina_reach().height)),
             plan.retina.sites_per_pixel),
       state_(grid_.size(), plan.retina.receptors, plan.retina.double_precision),
-      visibility_(grid_.foveal_falloff(plan.retina.fovea_sigma_px)) {
-  const int type = plan.retina.double_precision ? CV_64FC3 : CV_32FC3;
-  dark_ = cv::Mat(grid_.size(), type, cv::Scalar::all(plan.dark_cd_m2));
+      visibility_(grid_.foveal_falloff(plan.retina.fovea_sigma_px)) {}
+
+cv::Mat RetinaStage::dark_stimulus() const {
+  // A closed eye after a closed eye sees what it saw: the last stimulus,
+  // the same buffer, which unchanged() then knows without comparing.
+  if (last_dark_) return last_stimulus_;
+  return cv::Mat(grid_.size(), plan_.retina.double_precision ? CV_64FC3 : CV_32FC3,
+                 cv::Scalar::all(plan_.dark_cd_m2));
 }
 
 void RetinaStage::advance(const cv::Mat& rgb, const std::vector<GazeSegment>& frame_segments,
@@ -116,7 +121,15 @@ void RetinaStage::advance(const cv::Mat& rgb, const std::vector<GazeSegment>& fr
   double frame_dt = 0.0;
   stepped_ = false;
   for (const StepGroup& g : group_segments(segments, plan_.retina.substep_tolerance_px)) {
-    const cv::Mat stimulus = g.closed ? dark_ : sample(lms, g.x, g.y, surround);
+    // The last stimulus is read again only to know an unchanged one at
+    // rest, to catch up time skipped at rest, or as the dark a blink goes
+    // on seeing: else it is let go of before the next is made (a grid
+    // image, 25 MB at 1080p in `balanced`, not held beside it).
+    if (!(plan_.skip && resting_) && !(pending_dt_ > 0) && !(g.closed && last_dark_)) {
+      last_stimulus_.release();
+      last_dark_ = false;
+    }
+    const cv::Mat stimulus = g.closed ? dark_stimulus() : sample(lms, g.x, g.y, surround);
     const double curve_log = adaptation_log[g.last];
     const retina::ToneCurve curve(curve_log, plan_.tone);
     if (!started_) {
@@ -127,9 +140,11 @@ void RetinaStage::advance(const cv::Mat& rgb, const std::vector<GazeSegment>& fr
       continue;
     }
     catch_up();
+    last_stimulus_.release();  // (replaced below)
     state_.step(stimulus, curve, g.dt);
     frame_dt += g.dt;  // time deferred at rest is softened by catch_up()
     last_stimulus_ = stimulus;
+    last_dark_ = g.closed;
     last_curve_log_ = curve_log;
     resting_ = false;
     stepped_ = true;
@@ -188,15 +203,38 @@ bool RetinaStage::unchanged(const cv::Mat& stimulus, double curve_log) const {
   return worst <= kStimulusTolerance * plan_.dark_cd_m2;
 }
 
-bool RetinaStage::composite(const cv::Mat& tone_mapped, double gaze_x, double gaze_y, cv::Mat& out) {
-  if (plan_.skip && resting_) {
+void RetinaStage::prepare_afterimages(double gaze_x, double gaze_y) {
+  gain_.release();
+  bleach_.release();
+  draw_ = false;
+  if (!(plan_.skip && resting_)) {
+    if (!state_.holds_rest()) {
+      CV_Assert(!last_stimulus_.empty());
+      state_.recall_rest(last_stimulus_, retina::ToneCurve(last_curve_log_, plan_.tone));
+    }
+    draw_ = afterimage_maps(gaze_x, gaze_y);
+  }
+  state_.release_rest();
+}
+
+bool RetinaStage::composite(const cv::Mat& tone_mapped, cv::Mat& out) {
+  if (!draw_) {
     out = tone_mapped;
     return false;
   }
+  retina::composite_afterimages(tone_mapped, gain_, bleach_, out);
+  gain_.release();
+  bleach_.release();
+  draw_ = false;
+  return true;
+}
+
+bool RetinaStage::afterimage_maps(double gaze_x, double gaze_y) {
   retina::AfterimageMaps maps;
   const FrameProjection& p = *plan_.projection;
   const cv::Scalar none = cv::Scalar::all(0.0);
-  cv::Mat gain, bleach;
+  cv::Mat& gain = gain_;
+  cv::Mat& bleach = bleach_;
   if (p.identity()) {
     maps = state_.afterimages(plan_.retina.afterimages, visibility_);
     gain = grid_.draw(maps.gain_excess, gaze_x, gaze_y, none);
@@ -210,7 +248,6 @@ bool RetinaStage::composite(const cv::Mat& tone_mapped, double gaze_x, double ga
     // Only the sites the frame reads are made (about a quarter of the grid).
     const std::optional<cv::Rect> region = read_region(sites, grid_.size());
     if (!region) {  // the frame sees no site
-      out = tone_mapped;
       resting_ = whole_grid_rests();
       return false;
     }
@@ -221,12 +258,10 @@ bool RetinaStage::composite(const cv::Mat& tone_mapped, double gaze_x, double ga
     // come into view without the stimulus changing. Checked over the whole
     // grid only when the part in view is at rest.
     if (maps.largest <= kRestTolerance && *region != cv::Rect(cv::Point(0, 0), grid_.size())) {
-      retina::composite_afterimages(tone_mapped, gain, bleach, out);
       resting_ = whole_grid_rests();
       return true;
     }
   }
-  retina::composite_afterimages(tone_mapped, gain, bleach, out);
   resting_ = maps.largest <= kRestTolerance;
   return true;
 }
@@ -238,6 +273,12 @@ bool RetinaStage::whole_grid_rests() const {
 std::vector<cv::Mat> RetinaStage::save(bool& started) const {
   started = started_;
   std::vector<cv::Mat> mats = state_.save();
+  if (mats[2].empty() && !last_stimulus_.empty()) {  // let go of after the last afterimages: the same again
+    const retina::RestOfStimulus rest =
+        state_.rest_for(last_stimulus_, retina::ToneCurve(last_curve_log_, plan_.tone));
+    mats[2] = rest.bleached;
+    mats[3] = rest.response;
+  }
   mats.push_back(last_stimulus_);
   mats.push_back((cv::Mat_<double>(1, 3) << last_curve_log_, pending_dt_, resting_ ? 1.0 : 0.0));
   return mats;
@@ -271,6 +312,7 @@ void RetinaStage::restore(const std::vector<cv::Mat>& mats, bool started) {
   CV_Assert(mats.size() == 6 && mats[5].total() == 3 && mats[5].type() == CV_64F);
   state_.restore({mats.begin(), mats.begin() + 4});
   last_stimulus_ = mats[4].clone();
+  last_dark_ = false;
   last_curve_log_ = mats[5].at<double>(0);
   pending_dt_ = mats[5].at<double>(1);
   resting_ = mats[5].at<double>(2) != 0.0;

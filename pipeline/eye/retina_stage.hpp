@@ -36,9 +36,16 @@ class RetinaStage {
   void advance(const cv::Mat& rgb, const std::vector<GazeSegment>& segments, const std::vector<double>& adaptation_log,
                double surround_cd_m2);
 
-  // Adds the afterimages at the gaze (x, y) to the tone-mapped frame.
-  // Returns false when it drew nothing because the retina is at rest.
-  bool composite(const cv::Mat& tone_mapped, double gaze_x, double gaze_y, cv::Mat& out);
+  // Draws the afterimages at the gaze (x, y) for composite(), right after
+  // advance(): then the state lets go of its equilibrium B_inf and
+  // response R (two grid images, 50 MB at 1080p in `balanced`), which
+  // only the afterimages and the next step read, so they are not held
+  // through the frame's tone mapping and acuity loss; the next step makes
+  // them again, and a checkpoint recomputes them from the last stimulus.
+  void prepare_afterimages(double gaze_x, double gaze_y);
+  // Adds the prepared afterimages to the tone-mapped frame. Returns false
+  // when it drew nothing because the retina is at rest.
+  bool composite(const cv::Mat& tone_mapped, cv::Mat& out);
 
   // Whether the last advance() stepped the state (false: skipped at rest).
   bool stepped() const { return stepped_; }
@@ -65,6 +72,10 @@ class RetinaStage {
   // Whether no site of the grid departs from rest by more than
   // kRestTolerance (the afterimage maps of the whole grid).
   bool whole_grid_rests() const;
+  // The drawn maps into gain_ and bleach_; whether composite() draws them.
+  bool afterimage_maps(double gaze_x, double gaze_y);
+  cv::Mat gain_, bleach_;  // drawn afterimage maps, between prepare_afterimages() and composite()
+  bool draw_ = false;
   cv::Size reduced_frame_size(cv::Size frame) const;
   cv::Mat reduce_frame(const cv::Mat& frame) const;
   // The grid's stimulus for the gaze at plane point (plane_x, plane_y).
@@ -74,7 +85,10 @@ class RetinaStage {
   retina::RetinalGrid grid_;
   retina::RetinaState state_;
   cv::Mat visibility_;  // foveal fall-off of afterimages on the grid
-  cv::Mat dark_;
+  // The grid's stimulus with the eye closed (uniform dark), made when a
+  // blink needs it: kept for the whole run it held a grid image (25 MB at
+  // 1080p in `balanced`) through every open-eyed frame.
+  cv::Mat dark_stimulus() const;
   bool started_ = false;
   // Scene-adaptive activation (plan.skip): a retina at rest
   // (every afterimage term below kRestTolerance) that keeps receiving the
@@ -87,6 +101,7 @@ class RetinaStage {
   double spread_variance_sites2(double dt_s) const;
   bool unchanged(const cv::Mat& stimulus, double curve_log) const;
   cv::Mat last_stimulus_;
+  bool last_dark_ = false;  // last_stimulus_ is dark_stimulus()'s
   double last_curve_log_ = 0.0;
   double pending_dt_ = 0.0;  // seconds skipped at rest, not yet stepped
   bool resting_ = false;     // the last drawn afterimages were all below kRestTolerance

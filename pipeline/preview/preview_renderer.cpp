@@ -23,22 +23,27 @@ void PreviewRenderer::set_gaze(const std::vector<io::GazeSample>& recording) {
   for (Panel& p : panels_) detail::EyeAccess::set_gaze(p.eye, timeline);
 }
 
-io::DisplayFrame PreviewRenderer::process(const io::SceneFrame& frame, double t1_s) {
+io::DisplayFrame PreviewRenderer::process(io::SceneFrame frame, double t1_s) {
   std::vector<PanelView> views;
-  for (Panel& p : panels_) {
-    io::DisplayFrame seen = detail::EyeAccess::process(p.eye, frame, t1_s);
-    const FrameReport& r = detail::EyeAccess::report(p.eye);
-    views.push_back({seen.linear, p.spec.label, r.gaze_x, r.gaze_y, r.eye_closed});
-  }
   io::DisplayFrame out;
   out.index = frame.index;
   out.time_s = frame.time_s;
-  out.linear = compose_preview(views, options_, frame.time_s, frame.index);
+  for (Panel& p : panels_) {
+    io::DisplayFrame seen =
+        detail::EyeAccess::process(p.eye, &p == &panels_.back() ? std::move(frame) : frame, t1_s);
+    const FrameReport& r = detail::EyeAccess::report(p.eye);
+    views.push_back({seen.linear, p.spec.label, r.gaze_x, r.gaze_y, r.eye_closed});
+  }
+  out.linear = compose_preview(views, options_, out.time_s, out.index);
   if (needs_ == io::SinkNeeds::kPq16)
     encode_hdr10(out.linear, plan(0).glare.display_peak_cd_m2, out.code);
   else if (needs_ != io::SinkNeeds::kLinear)
-    retina::encode_display(out.linear, needs_ == io::SinkNeeds::kCode16 ? 16 : 8, frame.index,
+    retina::encode_display(out.linear, needs_ == io::SinkNeeds::kCode16 ? 16 : 8, out.index,
                            plan(0).encoding, out.code);
+  // A sink of codes reads only them: the float frame is not sent on, so a
+  // frame waiting for the writer holds 6 MB at 1080p, not 31, while the
+  // next frame's glare runs.
+  if (needs_ != io::SinkNeeds::kLinear) out.linear.release();
   return out;
 }
 

@@ -25,8 +25,9 @@ class PreviewRenderer {
   void set_gaze(const std::vector<io::GazeSample>& recording);
   // Steps every panel's eye through the frame's interval [frame.time_s,
   // t1_s) and returns the composed frame, encoded when the sink needs
-  // codes. report(i) then holds panel i's FrameReport.
-  io::DisplayFrame process(const io::SceneFrame& frame, double t1_s);
+  // codes. report(i) then holds panel i's FrameReport. The last panel's
+  // eye is handed the frame itself (EyeSimulator::process).
+  io::DisplayFrame process(io::SceneFrame frame, double t1_s);
 
   size_t panels() const { return panels_.size(); }
   const PanelSpec& spec(size_t i) const { return panels_[i].spec; }

@@ -243,7 +243,11 @@ RunSummary run(const Settings& s) {
                                                           : std::nullopt;
     const double t1 = next_time ? *next_time : current->time_s + 1.0 / info.frames_per_second;
     const bool written = current->index >= s.start_frame;
-    const io::DisplayFrame shown = renderer.process(*current, t1);
+    // The eye is handed the only reference to the frame's pixels, and lets
+    // go of them after the glare (EyeSimulator::process).
+    io::SceneFrame given = *current;
+    current->rgb.release();
+    const io::DisplayFrame shown = renderer.process(std::move(given), t1);
     const FrameReport& main_report = renderer.report(main);
     if (main_report.nonfinite_pixels > 0 && s.bad_pixels == "fail")
       throw InputError(current->source + ": frame " + std::to_string(current->index) + " has " +

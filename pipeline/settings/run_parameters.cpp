@@ -239,6 +239,10 @@ ParamSet run_parameters(Settings& s) {
                  {"ultrafast", "superfast", "veryfast", "faster", "fast", "medium", "slow", "slower", "veryslow"}));
   set.add(number("encoder-threads", "", "H.264 encoder threads (fixed: output bytes depend on it)", out,
                  &s.sink.video.encoder_threads, 1, 64));
+  set.add(flag("sliced-threads",
+               "H.264 encoder threads each code a slice of every frame instead of a frame each: x264 holds fewer "
+               "frames, the file is a little larger (--quality balanced sets it)",
+               out, &s.sink.video.sliced_threads));
   set.add(choice("png-bits", "PNG bit depth", out, &s.sink.png_bits, {"8", "16"}));
   // Report.
   const std::string rep = "Report";
