@@ -86,7 +86,9 @@ template <typename T>
 void departure_pass_in_place(cv::Mat& state, const cv::Mat& rest, T k, T a, T hi) {
   const int rows = state.rows, n = state.cols * 3;
   const T centre = T(1) - 2 * a;
-  const int stripes = std::min(rows, 4 * std::max(1, cv::getNumThreads()));
+  // A few stripes per thread, at most 32: the rows swept beforehand stay
+  // few on a machine of many threads.
+  const int stripes = std::min(rows, std::min(4 * std::max(1, cv::getNumThreads()), 32));
   const auto first_row = [&](int s) { return int(std::int64_t(rows) * s / stripes); };
   // Per stripe, the sweep of the row above it and of the row below it.
   cv::Mat beyond(2 * stripes, n, state.type());

@@ -186,7 +186,8 @@ void RetinaState::recall_rest(const cv::Mat& lms, const ToneCurve& curve) {
 }
 
 void RetinaState::soften(double variance_sites2) {
-  if (!(variance_sites2 > 0.0) || response_.empty()) return;
+  if (!(variance_sites2 > 0.0)) return;
+  CV_Assert(holds_rest());  // after step() and before release_rest(): not a silent no-op
   diffuse_departure(bleached_, bleached_rest_, 1.0, variance_sites2, 1.0);
   diffuse_departure(deficit_, response_, c_max_, variance_sites2, c_max_);
 }

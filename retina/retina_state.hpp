@@ -52,7 +52,8 @@ class RetinaState {
   // to its spatial variance along each axis: afterimages look soft (Jacobs
   // et al. 2015 sec. 2.4) while a retina at rest stays exactly at rest.
   // Variances add, so many small steps blur as much as one large one
-  // whatever the frame rate or grid (diffusion.hpp).
+  // whatever the frame rate or grid (diffusion.hpp). Needs B_inf and R
+  // (holds_rest()).
   void soften(double variance_sites2);
 
   // The afterimage terms for the last stimulus, weighted by `visibility`

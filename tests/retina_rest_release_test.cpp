@@ -57,5 +57,31 @@ TEST(RetinaRestRelease, TheEquilibriumIsNotHeldBetweenFramesAndACheckpointCarrie
   }
 }
 
+TEST(RetinaRestRelease, RecalledRestIsTheStepsOwnBytes) {
+  // What a step leaves (B_inf and R of its stimulus) against rest_for()
+  // of the same stimulus and curve, after the state has moved: the same
+  // bytes, in float and in double, so a checkpoint made after the release
+  // holds what the uninterrupted run held.
+  for (const bool precise : {false, true}) {
+    const retina::PhotoreceptorParams params;
+    retina::RetinaState state(cv::Size(37, 23), params, precise);
+    const int type = precise ? CV_64FC3 : CV_32FC3;
+    cv::Mat lms(23, 37, type);
+    cv::randu(lms, 0.0, 5000.0);
+    lms(cv::Rect(0, 0, 37, 5)).setTo(cv::Scalar::all(0.2));  // a uniform run, as off the frame
+    const retina::ToneCurve curve(0.3, retina::ToneCurveParams{});
+    state.rest(lms * 0.1, curve);
+    state.step(lms, curve, 1.0 / 30.0);
+    ASSERT_TRUE(state.holds_rest());
+    const std::vector<cv::Mat> held = state.save();
+    const retina::RestOfStimulus recalled = state.rest_for(lms, curve);
+    EXPECT_EQ(cv::norm(held[2], recalled.bleached, cv::NORM_INF), 0.0) << (precise ? "double" : "float");
+    EXPECT_EQ(cv::norm(held[3], recalled.response, cv::NORM_INF), 0.0) << (precise ? "double" : "float");
+    state.release_rest();
+    EXPECT_FALSE(state.holds_rest());
+    EXPECT_TRUE(state.save()[2].empty());
+  }
+}
+
 }  // namespace
 }  // namespace eyestream::pipeline

@@ -90,15 +90,16 @@ struct Eye::Impl {
     last = pipeline::FrameReport();
     // The target only matters to the report (and its masks are files).
     const cv::Mat mask = plan.report ? target.mask(scene.index) : cv::Mat();
-    index = scene.index + 1;
+    const std::int64_t next = scene.index + 1;
     io::DisplayFrame shown = eye.process(std::move(scene), segments, &last, mask);
     last_recorded_pupil = plan.pupil_from_gaze ? segments.front().recorded_pupil_mm : NAN;
+    index = next;
     return shown;
   }
 
   FrameReport public_report() const {
     const pipeline::FrameReport& r = last;
-    const double model = eye.save().pupil_mm.value_or(0.0);
+    const double model = eye.pupil_mm().value_or(0.0);
     FrameReport out{std::pow(10.0, r.adaptation_log),
                     std::isfinite(last_recorded_pupil) ? last_recorded_pupil : model,
                     model,

@@ -70,6 +70,7 @@ class EyeSimulator {
                            FrameReport* report = nullptr, const cv::Mat& target_mask = cv::Mat());
 
   double adaptation_log() const { return adaptation_.value_or(plan_.dark_log); }
+  std::optional<double> pupil_mm() const { return pupil_; }  // the model's, as save() gives it
   EyeMemory save() const;
   // restore() takes what save() gave; memory_error() says what is wrong
   // with a memory from elsewhere (a checkpoint file), empty when nothing.

@@ -268,7 +268,7 @@ bool GlareStage::Cache::matches(const FrameDigest& rgb, const glare::PsfWeights&
 }
 
 void GlareStage::Cache::keep(const FrameDigest& rgb, const glare::PsfWeights& w, double s, const cv::Mat& out) {
-  const bool again = seen(rgb, w, s);
+  const bool again = rgb == scene;  // the frame itself: the optics may still be settling
   scene = rgb;
   weights = w;
   surround = s;
@@ -278,7 +278,7 @@ void GlareStage::Cache::keep(const FrameDigest& rgb, const glare::PsfWeights& w,
 cv::Mat GlareStage::with_wave_lines(const cv::Mat& light, const glare::PsfWeights& w, double pupil_mm, cv::Mat retinal,
                                     bool shared) {
   if (!wave_) return retinal;
-  cv::Mat out;  // a new image when the cache keeps the smooth glare, else in place
+  cv::Mat out;  // a new image when the cache holds the smooth glare, else in place
   if (!shared) out = retinal;
   return wave_->add(light, w, pupil_mm, moment_.time_s, moment_.gaze, retinal, out) ? out : retinal;
 }
@@ -312,7 +312,7 @@ cv::Mat GlareStage::apply(const cv::Mat& rgb, double adaptation_log, double surr
     cache_.retinal.release();  // not this frame's: no need to hold it through the spread
     cv::Mat out = spread(rgb, w, surround);
     if (plan_.skip) cache_.keep(digest, w, surround, out);
-    return with_wave_lines(rgb, w, pupil_mm, out, plan_.skip);
+    return with_wave_lines(rgb, w, pupil_mm, out, plan_.skip && cache_.retinal.data == out.data);
   }
   // The excess over the display peak, with the pixel's colour (Spencer et
   // al. 1995 sec. 3.2; Yoshida et al. 2008): dL = max(L - L_dmax, 0),

@@ -30,7 +30,8 @@ class GlareStage {
   // (uniform_field.hpp, within kUniformTolerance) is returned as it is, and
   // a frame equal to the last one, with the same optics (adaptation and
   // pupil quantised to 1e-4 log10 units and 1e-3 mm), returns the last
-  // result; *ran is false then (and *reused true for the reuse).
+  // result once the frame has come twice in a row (Cache, below); *ran is
+  // false then (and *reused true for the reuse).
   cv::Mat apply(const cv::Mat& rgb, double adaptation_log, double surround_cd_m2, double pupil_mm = 0.0,
                 bool* ran = nullptr, bool* reused = nullptr);
 
@@ -117,9 +118,10 @@ class GlareStage {
   cv::Vec3d centre_[4];
   // The last full-mode frame, for still scenes: known by its digest (no
   // copy of it is kept), with the optics it was seen with, and its glare
-  // once the frame has come twice (a still scene's second frame): moving
-  // footage keeps no glare image (25 MB at 1080p) through the frame's later
-  // stages, and a still scene runs its glare twice instead of once.
+  // once the frame has come twice in a row (whatever the optics did):
+  // moving footage keeps no glare image (25 MB at 1080p) through the
+  // frame's later stages, and a still scene runs its glare on its second
+  // frame too.
   struct Cache {
     FrameDigest scene;
     cv::Mat retinal;

@@ -206,6 +206,7 @@ bool RetinaStage::unchanged(const cv::Mat& stimulus, double curve_log) const {
 void RetinaStage::prepare_afterimages(double gaze_x, double gaze_y) {
   gain_.release();
   bleach_.release();
+  drawn_at_.reset();
   draw_ = false;
   if (!(plan_.skip && resting_)) {
     if (!state_.holds_rest()) {
@@ -222,9 +223,15 @@ bool RetinaStage::composite(const cv::Mat& tone_mapped, cv::Mat& out) {
     out = tone_mapped;
     return false;
   }
+  if (drawn_at_) {  // the whole grid's maps: drawn now, at the gaze
+    const cv::Scalar none = cv::Scalar::all(0.0);
+    gain_ = grid_.draw(gain_, drawn_at_->x, drawn_at_->y, none);
+    bleach_ = grid_.draw(bleach_, drawn_at_->x, drawn_at_->y, none);
+  }
   retina::composite_afterimages(tone_mapped, gain_, bleach_, out);
   gain_.release();
   bleach_.release();
+  drawn_at_.reset();
   draw_ = false;
   return true;
 }
@@ -236,9 +243,13 @@ bool RetinaStage::afterimage_maps(double gaze_x, double gaze_y) {
   cv::Mat& gain = gain_;
   cv::Mat& bleach = bleach_;
   if (p.identity()) {
+    // Kept on the grid (the size of the B_inf and R let go of) and drawn
+    // in composite(): drawn, they are frame-sized, larger when the grid is
+    // coarser than the frame.
     maps = state_.afterimages(plan_.retina.afterimages, visibility_);
-    gain = grid_.draw(maps.gain_excess, gaze_x, gaze_y, none);
-    bleach = grid_.draw(maps.bleach, gaze_x, gaze_y, none);
+    gain = maps.gain_excess;
+    bleach = maps.bleach;
+    drawn_at_ = cv::Point2d(gaze_x, gaze_y);
   } else {
     // Drawn at the grid's own resolution (the frame reduced as for the
     // stimulus), where the maps hold all their detail, and enlarged

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <opencv2/core.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,8 +37,9 @@ class RetinaStage {
   void advance(const cv::Mat& rgb, const std::vector<GazeSegment>& segments, const std::vector<double>& adaptation_log,
                double surround_cd_m2);
 
-  // Draws the afterimages at the gaze (x, y) for composite(), right after
-  // advance(): then the state lets go of its equilibrium B_inf and
+  // Makes the afterimage maps at the gaze (x, y) for composite() (drawn to
+  // the frame, or on the frame's own plane kept on the grid until then),
+  // right after advance(): then the state lets go of its equilibrium B_inf and
   // response R (two grid images, 50 MB at 1080p in `balanced`), which
   // only the afterimages and the next step read, so they are not held
   // through the frame's tone mapping and acuity loss; the next step makes
@@ -75,6 +77,7 @@ class RetinaStage {
   // The drawn maps into gain_ and bleach_; whether composite() draws them.
   bool afterimage_maps(double gaze_x, double gaze_y);
   cv::Mat gain_, bleach_;  // drawn afterimage maps, between prepare_afterimages() and composite()
+  std::optional<cv::Point2d> drawn_at_;  // or the grid's maps, to draw at this gaze (frame's own plane)
   bool draw_ = false;
   cv::Size reduced_frame_size(cv::Size frame) const;
   cv::Mat reduce_frame(const cv::Mat& frame) const;

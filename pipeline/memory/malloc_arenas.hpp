@@ -9,9 +9,9 @@
 
 namespace eyestream::pipeline {
 
-// At most two arenas. Call before starting threads: the command-line
-// program calls it first; a program using the library decides for itself.
-// Does nothing without glibc.
+// At most two arenas, unless MALLOC_ARENA_MAX says otherwise. Call before
+// starting threads: the command-line program calls it first; a program
+// using the library decides for itself. Does nothing without glibc.
 void limit_malloc_arenas();
 
 }  // namespace eyestream::pipeline
