@@ -240,15 +240,13 @@ bool RetinaStage::afterimage_maps(double gaze_x, double gaze_y) {
   retina::AfterimageMaps maps;
   const FrameProjection& p = *plan_.projection;
   const cv::Scalar none = cv::Scalar::all(0.0);
-  cv::Mat& gain = gain_;
-  cv::Mat& bleach = bleach_;
   if (p.identity()) {
     // Kept on the grid (the size of the B_inf and R let go of) and drawn
     // in composite(): drawn, they are frame-sized, larger when the grid is
     // coarser than the frame.
     maps = state_.afterimages(plan_.retina.afterimages, visibility_);
-    gain = maps.gain_excess;
-    bleach = maps.bleach;
+    gain_ = maps.gain_excess;
+    bleach_ = maps.bleach;
     drawn_at_ = cv::Point2d(gaze_x, gaze_y);
   } else {
     // Drawn at the grid's own resolution (the frame reduced as for the
@@ -263,8 +261,8 @@ bool RetinaStage::afterimage_maps(double gaze_x, double gaze_y) {
       return false;
     }
     maps = state_.afterimages(plan_.retina.afterimages, visibility_, *region);
-    gain = grid_.draw_at(maps.gain_excess, sites, none);
-    bleach = grid_.draw_at(maps.bleach, sites, none);
+    gain_ = grid_.draw_at(maps.gain_excess, sites, none);
+    bleach_ = grid_.draw_at(maps.bleach, sites, none);
     // At rest only if the whole grid is: an afterimage out of view now may
     // come into view without the stimulus changing. Checked over the whole
     // grid only when the part in view is at rest.
