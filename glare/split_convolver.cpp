@@ -69,9 +69,17 @@ cv::Mat block_sums(const cv::Mat& m, int by, cv::Size size) {
     for (int v = rows.start; v < rows.end; ++v) {
       cv::Vec3f* out = sums.ptr<cv::Vec3f>(v);
       std::fill(out, out + size.width, cv::Vec3f());
+      // Each block's pixels in the order a sweep along the row meets them,
+      // whole blocks first (no division per pixel), then the cut last one.
+      const int whole = m.cols / by;
       for (int y = v * by; y < std::min((v + 1) * by, m.rows); ++y) {
         const cv::Vec3f* in = m.ptr<cv::Vec3f>(y);
-        for (int x = 0; x < m.cols; ++x) out[x / by] += in[x];
+        for (int u = 0; u < whole; ++u) {
+          cv::Vec3f sum = out[u];
+          for (int k = 0; k < by; ++k) sum += in[u * by + k];
+          out[u] = sum;
+        }
+        for (int x = whole * by; x < m.cols; ++x) out[whole] += in[x];
       }
     }
   });
@@ -210,21 +218,37 @@ void SplitConvolver::add_coarse(const cv::Mat& rgb, const ChannelWeights& w, cv:
   float scale[3];
   for (int c = 0; c < 3; ++c) scale[c] = got[c] > 0 ? float(want[c] / got[c]) : 0.0f;
   // out = max(near + coarse, 0): rounding residue never goes negative.
-  cv::parallel_for_(cv::Range(0, height_), [&](const cv::Range& rows) {
-    for (int y = rows.start; y < rows.end; ++y) {
-      cv::Vec3f* o = out.ptr<cv::Vec3f>(y);
-      const LinearTap& ty = up_y_[size_t(y)];
-      const cv::Vec3f* a = landed.ptr<cv::Vec3f>(ty.a);
-      const cv::Vec3f* b = landed.ptr<cv::Vec3f>(ty.b);
-      for (int x = 0; x < width_; ++x) {
-        const LinearTap& tx = up_x_[size_t(x)];
-        const cv::Vec3f top = a[tx.a] * (1.0f - tx.wb) + a[tx.b] * tx.wb;
-        const cv::Vec3f bottom = b[tx.a] * (1.0f - tx.wb) + b[tx.b] * tx.wb;
-        const cv::Vec3f u = top * (1.0f - ty.wb) + bottom * ty.wb;
-        for (int c = 0; c < 3; ++c) o[x][c] = std::max(o[x][c] + u[c] * scale[c], 0.0f);
-      }
-    }
-  });
+  // Each stripe widens a block row once for all the frame rows that read
+  // it (the same sums as per pixel, so the same bytes).
+  cv::parallel_for_(
+      cv::Range(0, height_),
+      [&](const cv::Range& rows) {
+        cv::Mat widened(2, width_, CV_32FC3);  // two block rows across the frame, in slots row % 2
+        int held[2] = {-1, -1};
+        const auto row_of = [&](int v) {
+          cv::Vec3f* w = widened.ptr<cv::Vec3f>(v % 2);
+          if (held[v % 2] != v) {
+            const cv::Vec3f* m = landed.ptr<cv::Vec3f>(v);
+            for (int x = 0; x < width_; ++x) {
+              const LinearTap& tx = up_x_[size_t(x)];
+              w[x] = m[tx.a] * (1.0f - tx.wb) + m[tx.b] * tx.wb;
+            }
+            held[v % 2] = v;
+          }
+          return w;
+        };
+        for (int y = rows.start; y < rows.end; ++y) {
+          cv::Vec3f* o = out.ptr<cv::Vec3f>(y);
+          const LinearTap& ty = up_y_[size_t(y)];
+          const cv::Vec3f* top = row_of(ty.a);
+          const cv::Vec3f* bottom = ty.b == ty.a ? top : row_of(ty.b);
+          for (int x = 0; x < width_; ++x) {
+            const cv::Vec3f u = top[x] * (1.0f - ty.wb) + bottom[x] * ty.wb;
+            for (int c = 0; c < 3; ++c) o[x][c] = std::max(o[x][c] + u[c] * scale[c], 0.0f);
+          }
+        }
+      },
+      double(std::max(1, cv::getNumThreads()) * 4));
 }
 
 }  // namespace eyestream::glare

@@ -37,13 +37,53 @@ double tile_output_share(int radius) {
   return s * s;
 }
 
-// A thread's arrays for one tile's transforms, made at its first tile and
-// kept with the engine: the frame loop asks the allocator for nothing.
+// One row of a window: the interleaved pixels in[0..n) into each channel's
+// array.
+void split_row(const float* in, int n, double* r0, double* r1, double* r2) {
+  for (int x = 0; x < n; ++x) {
+    r0[x] = double(in[3 * x]);
+    r1[x] = double(in[3 * x + 1]);
+    r2[x] = double(in[3 * x + 2]);
+  }
+}
+
+// Whether any of a channel's window values is not 0: by blocks, stopping
+// at the first lit one.
+bool any_light(const double* real, size_t n) {
+  constexpr size_t kBlock = 256;
+  for (size_t j0 = 0; j0 < n; j0 += kBlock) {
+    int any = 0;
+    for (size_t j = j0; j < std::min(j0 + kBlock, n); ++j) any |= real[j] != 0.0;
+    if (any) return true;
+  }
+  return false;
+}
+
+// A spectrum times a real one, in place.
+void multiply_spectrum(double* spectrum, const double* kernel, size_t n) {
+  for (size_t j = 0; j < n; ++j) {
+    spectrum[2 * j] *= kernel[j];
+    spectrum[2 * j + 1] *= kernel[j];
+  }
+}
+
+// One output row from each channel's result, scaled, negative residue set to 0.
+void merge_row(const double* r0, const double* r1, const double* r2, double scale, int n, float* out) {
+  for (int x = 0; x < n; ++x) {
+    out[3 * x] = float(std::max(r0[x] * scale, 0.0));
+    out[3 * x + 1] = float(std::max(r1[x] * scale, 0.0));
+    out[3 * x + 2] = float(std::max(r2[x] * scale, 0.0));
+  }
+}
+
+// A thread's arrays for one tile's transforms (each channel's window, then
+// its result, and one spectrum), made at its first tile and kept with the
+// engine: the frame loop asks the allocator for nothing.
 struct TileArrays {
-  double* real = nullptr;
+  double* real[3] = {};
   fftw_complex* spectrum = nullptr;
   ~TileArrays() {
-    fftw_free(real);
+    for (double* r : real) fftw_free(r);
     fftw_free(spectrum);
   }
 };
@@ -109,49 +149,40 @@ void TiledConvolver::convolve(const cv::Mat& rgb, const ChannelWeights& w, cv::M
   const double scale = 1.0 / (double(t) * t);
   cv::parallel_for_(cv::Range(0, across * down), [&](const cv::Range& range) {
     TileArrays& a = e.arrays.getRef();
-    if (!a.real) {
-      a.real = fftw_alloc_real(size_t(t) * t);
+    if (!a.spectrum) {
+      for (double*& real : a.real) real = fftw_alloc_real(size_t(t) * t);
       a.spectrum = fftw_alloc_complex(n);
     }
-    double* real = a.real;
     fftw_complex* spectrum = a.spectrum;
     for (int tile = range.start; tile < range.end; ++tile) {
       // Output block [x0, x0 + b) x [y0, y0 + b) of the frame, read from
-      // the window r pixels wider each way.
+      // the window r pixels wider each way, every channel in one sweep; a
+      // window cut by the frame's edge is zero beyond it.
       const int x0 = (tile % across) * b, y0 = (tile / across) * b;
       const int wx0 = std::max(x0 - r, 0), wx1 = std::min(x0 + b + r, e.width);
       const int wy0 = std::max(y0 - r, 0), wy1 = std::min(y0 + b + r, e.height);
       const int ox1 = std::min(x0 + b, e.width), oy1 = std::min(y0 + b, e.height);
+      if (wx1 - wx0 < t || wy1 - wy0 < t)
+        for (double* real : a.real) std::memset(real, 0, sizeof(double) * size_t(t) * t);
+      for (int y = wy0; y < wy1; ++y) {
+        const size_t at = size_t(y - y0 + r) * t + size_t(wx0 - x0 + r);
+        split_row(rgb.ptr<float>(y) + 3 * wx0, wx1 - wx0, a.real[0] + at, a.real[1] + at, a.real[2] + at);
+      }
+      // A channel whose window holds no light is not transformed: its
+      // result is 0 (+0, whatever zeros it held).
       for (int c = 0; c < 3; ++c) {
-        std::memset(real, 0, sizeof(double) * size_t(t) * t);
-        bool lit = false;
-        for (int y = wy0; y < wy1; ++y) {
-          const cv::Vec3f* in = rgb.ptr<cv::Vec3f>(y);
-          double* row = real + size_t(y - y0 + r) * t + (wx0 - x0 + r);
-          for (int x = wx0; x < wx1; ++x) {
-            row[x - wx0] = double(in[x][c]);
-            lit |= in[x][c] != 0.0f;
-          }
-        }
-        if (!lit) {
-          for (int y = y0; y < oy1; ++y) {
-            cv::Vec3f* o = out.ptr<cv::Vec3f>(y);
-            for (int x = x0; x < ox1; ++x) o[x][c] = 0.0f;
-          }
+        double* real = a.real[c];
+        if (!any_light(real, size_t(t) * t)) {
+          std::memset(real, 0, sizeof(double) * size_t(t) * t);
           continue;
         }
         fftw_execute_dft_r2c(e.forward, real, spectrum);
-        const double* kc = kernel.data() + size_t(c) * n;
-        for (size_t j = 0; j < n; ++j) {
-          spectrum[j][0] *= kc[j];
-          spectrum[j][1] *= kc[j];
-        }
+        multiply_spectrum(&spectrum[0][0], kernel.data() + size_t(c) * n, n);
         fftw_execute_dft_c2r(e.backward, spectrum, real);
-        for (int y = y0; y < oy1; ++y) {
-          const double* row = real + size_t(y - y0 + r) * t + r;
-          cv::Vec3f* o = out.ptr<cv::Vec3f>(y);
-          for (int x = x0; x < ox1; ++x) o[x][c] = float(std::max(row[x - x0] * scale, 0.0));
-        }
+      }
+      for (int y = y0; y < oy1; ++y) {
+        const size_t at = size_t(y - y0 + r) * t + size_t(r);
+        merge_row(a.real[0] + at, a.real[1] + at, a.real[2] + at, scale, ox1 - x0, out.ptr<float>(y) + 3 * x0);
       }
     }
   });

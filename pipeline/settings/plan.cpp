@@ -33,7 +33,12 @@ Plan compile_plan(const Settings& s, const io::SourceInfo& source) {
   p.tone = s.tone;
   p.encoding = s.encoding;
   p.encoding.seed = std::uint64_t(s.seed);
-  p.retina.sites_per_pixel = s.state_sites_per_pixel;
+  // A grid of at least state_least_sites_per_deg: the afterimages'
+  // softening (0.01 deg^2/s) spreads them by 0.05 deg within a quarter
+  // second's fixation, so 20 sites/deg keep what a fixation leaves, at
+  // any frame size (docs/model.md).
+  p.retina.sites_per_pixel =
+      std::min(std::max(s.state_sites_per_pixel, s.state_least_sites_per_deg / p.pixels_per_degree), 1.0);
   p.retina.double_precision = s.precision == "double";
   p.retina.substep_tolerance_px = s.substep_tolerance_deg * p.pixels_per_degree;
   p.retina.spread_deg2_per_s = s.afterimage_spread_deg2_per_s;
@@ -135,7 +140,8 @@ std::string Plan::describe() const {
                           std::to_string(int(std::lround(100.0 * (*lens_filter)(2, 2)))) + " %"
                     : std::string("the standard observer's"))
     << "\n"
-    << "retina state = " << retina.sites_per_pixel << " sites/px, " << (retina.double_precision ? "double" : "float")
+    << "retina state = " << retina.sites_per_pixel << " sites/px (" << retina.sites_per_pixel * pixels_per_degree
+    << " sites/deg at the centre), " << (retina.double_precision ? "double" : "float")
     << ", sub-step tolerance " << retina.substep_tolerance_px << " px\n"
     << "afterimages = " << (retina.afterimages.bleaching ? "bleaching" : "no bleaching") << ", "
     << (retina.afterimages.local_adaptation ? "local adaptation" : "no local adaptation") << "\n"

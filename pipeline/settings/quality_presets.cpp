@@ -8,6 +8,7 @@ void apply_quality_preset(const std::string& name, Settings& s) {
   if (name == "reference") {
     s.precision = "double";
     s.state_sites_per_pixel = 1.0;
+    s.state_least_sites_per_deg = 0.0;
     s.substep_tolerance_deg = 0.0;
     s.psf_model = "vos";
     s.glare_engine = "exact";
@@ -20,7 +21,8 @@ void apply_quality_preset(const std::string& name, Settings& s) {
     s.sink.video.sliced_threads = false;
   } else if (name == "balanced") {
     s.precision = "float";
-    s.state_sites_per_pixel = 0.5;
+    s.state_sites_per_pixel = 0.25;
+    s.state_least_sites_per_deg = 20.0;  // 0.31 site/px at 1080p, 0.47 at 720p (docs/model.md)
     s.substep_tolerance_deg = 0.05;
     s.psf_model = "vos";
     s.glare_engine = "split";
@@ -34,6 +36,7 @@ void apply_quality_preset(const std::string& name, Settings& s) {
   } else if (name == "fast") {
     s.precision = "float";
     s.state_sites_per_pixel = 0.25;
+    s.state_least_sites_per_deg = 0.0;
     s.substep_tolerance_deg = 0.25;
     s.psf_model = "vos";
     s.glare_engine = "split";
