@@ -27,7 +27,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     info.width = 32;
     info.height = 18;
     info.frames_per_second = 30;
-    return pipeline::compile_plan(pipeline::Settings{}, info);
+    pipeline::Settings s;
+    s.state_sites_per_pixel = 0.5;  // the grid of the seeds' checkpoints
+    s.state_least_sites_per_deg = 0.0;
+    return pipeline::compile_plan(s, info);
   }();
   std::vector<std::uint8_t> bytes(data, data + size);
   constexpr std::size_t kMagic = 23, kBody = kMagic + 8;  // "EYESTREAM-CHECKPOINT-2\n", then the checksum

@@ -226,16 +226,16 @@ void SplitConvolver::add_coarse(const cv::Mat& rgb, const ChannelWeights& w, cv:
         cv::Mat widened(2, width_, CV_32FC3);  // two block rows across the frame, in slots row % 2
         int held[2] = {-1, -1};
         const auto row_of = [&](int v) {
-          cv::Vec3f* w = widened.ptr<cv::Vec3f>(v % 2);
+          cv::Vec3f* wide = widened.ptr<cv::Vec3f>(v % 2);
           if (held[v % 2] != v) {
             const cv::Vec3f* m = landed.ptr<cv::Vec3f>(v);
             for (int x = 0; x < width_; ++x) {
               const LinearTap& tx = up_x_[size_t(x)];
-              w[x] = m[tx.a] * (1.0f - tx.wb) + m[tx.b] * tx.wb;
+              wide[x] = m[tx.a] * (1.0f - tx.wb) + m[tx.b] * tx.wb;
             }
             held[v % 2] = v;
           }
-          return w;
+          return wide;
         };
         for (int y = rows.start; y < rows.end; ++y) {
           cv::Vec3f* o = out.ptr<cv::Vec3f>(y);

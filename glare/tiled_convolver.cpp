@@ -37,6 +37,8 @@ double tile_output_share(int radius) {
   return s * s;
 }
 
+namespace {
+
 // One row of a window: the interleaved pixels in[0..n) into each channel's
 // array.
 void split_row(const float* in, int n, double* r0, double* r1, double* r2) {
@@ -75,6 +77,8 @@ void merge_row(const double* r0, const double* r1, const double* r2, double scal
     out[3 * x + 2] = float(std::max(r2[x] * scale, 0.0));
   }
 }
+
+}  // namespace
 
 // A thread's arrays for one tile's transforms (each channel's window, then
 // its result, and one spectrum), made at its first tile and kept with the

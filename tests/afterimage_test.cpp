@@ -41,6 +41,7 @@ struct Viewer {
 Settings reference_settings() {
   Settings s;
   s.state_sites_per_pixel = 1.0;
+  s.state_least_sites_per_deg = 0.0;  // the resolution a test sets, never raised
   s.glare = false;
   return s;
 }

@@ -87,6 +87,49 @@ TEST(TiledConvolver, UnlitTilesAndChannelsStayDark) {
   EXPECT_EQ(cv::countNonZero(channels[0](cv::Rect(0, block, 3 * block, block))), 0);
 }
 
+TEST(TiledConvolver, InteriorTilesReuseTheirArraysWithoutStaleLight) {
+  // Four tiles each way on one thread, so one thread's arrays go from
+  // edge tiles (windows cut by the frame) to whole interior windows and
+  // back: red light only in one interior tile, green only in the next,
+  // -0 everywhere else. Every pixel matches the direct sum, and no light
+  // reaches, nor a -0 leaves, where none was.
+  const int r = 5;
+  const ComponentKernels k = random_kernels(r, 13);
+  const int block = TiledConvolver(k, 1, 1).tile_size() - 2 * r;
+  const cv::Size size(4 * block, 4 * block);
+  cv::Mat in(size, CV_32FC3, cv::Scalar::all(-0.0));
+  cv::RNG rng(8);
+  const cv::Rect red(block + 2 * r, block + 2 * r, block - 4 * r, block - 4 * r);
+  const cv::Rect green = red + cv::Point(block, 0);
+  for (int y = 0; y < size.height; ++y)
+    for (int x = 0; x < size.width; ++x) {
+      if (red.contains({x, y})) in.at<cv::Vec3f>(y, x)[0] = rng.uniform(1.0f, 100.0f);
+      if (green.contains({x, y})) in.at<cv::Vec3f>(y, x)[1] = rng.uniform(1.0f, 100.0f);
+    }
+  const int threads = cv::getNumThreads();
+  cv::setNumThreads(1);
+  cv::Mat got;
+  TiledConvolver(k, size.width, size.height).convolve(in, same_in_every_channel(some_weights()), got);
+  cv::setNumThreads(threads);
+  EXPECT_LT(worst_difference(got, direct_convolution(in, k, some_weights())), 1e-4);
+  int negative_zeros = 0;
+  for (int y = 0; y < size.height; ++y)
+    for (int x = 0; x < size.width; ++x)
+      for (int c = 0; c < 3; ++c) negative_zeros += std::signbit(got.at<cv::Vec3f>(y, x)[c]) ? 1 : 0;
+  EXPECT_EQ(negative_zeros, 0);
+  std::vector<cv::Mat> channels;
+  cv::split(got, channels);
+  EXPECT_EQ(cv::countNonZero(channels[2]), 0) << "blue: no light anywhere";
+  // Each light lies in one tile's window only (2R inside its block), so
+  // the other tiles are exactly 0 in its channel (within its own tile the
+  // FFT leaves rounding residue, which the direct sum bounds above).
+  const cv::Rect red_tile(block, block, block, block), green_tile = red_tile + cv::Point(block, 0);
+  EXPECT_EQ(cv::countNonZero(channels[0]) - cv::countNonZero(channels[0](red_tile)), 0) << "red in other tiles";
+  EXPECT_EQ(cv::countNonZero(channels[1]) - cv::countNonZero(channels[1](green_tile)), 0) << "green in other tiles";
+  EXPECT_GT(cv::countNonZero(channels[0](red)), red.area() / 2);
+  EXPECT_GT(cv::countNonZero(channels[1](green)), green.area() / 2);
+}
+
 TEST(TiledConvolver, KeepsANightRoadBesideAHeadlight) {
   // As the whole-frame engine's test, over several tiles.
   const int r = 16;

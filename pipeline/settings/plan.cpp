@@ -33,12 +33,16 @@ Plan compile_plan(const Settings& s, const io::SourceInfo& source) {
   p.tone = s.tone;
   p.encoding = s.encoding;
   p.encoding.seed = std::uint64_t(s.seed);
-  // A grid of at least state_least_sites_per_deg: the afterimages'
-  // softening (0.01 deg^2/s) spreads them by 0.05 deg within a quarter
-  // second's fixation, so 20 sites/deg keep what a fixation leaves, at
-  // any frame size (docs/model.md).
+  // A grid of at least state_least_sites_per_deg, raised no further than
+  // half a site per pixel: the afterimages' softening (0.01 deg^2/s)
+  // spreads them by 0.05 deg within a quarter second's fixation, so 20
+  // sites/deg keep what a fixation leaves; the cap keeps a wide field of
+  // view (few px/deg) from asking for a reference-sized grid
+  // (docs/model.md).
+  constexpr double kMostRaisedSitesPerPixel = 0.5;
   p.retina.sites_per_pixel =
-      std::min(std::max(s.state_sites_per_pixel, s.state_least_sites_per_deg / p.pixels_per_degree), 1.0);
+      std::max(s.state_sites_per_pixel,
+               std::min(s.state_least_sites_per_deg / p.pixels_per_degree, kMostRaisedSitesPerPixel));
   p.retina.double_precision = s.precision == "double";
   p.retina.substep_tolerance_px = s.substep_tolerance_deg * p.pixels_per_degree;
   p.retina.spread_deg2_per_s = s.afterimage_spread_deg2_per_s;

@@ -20,7 +20,7 @@
 namespace eyestream::pipeline {
 
 struct RetinaPlan {
-  double sites_per_pixel = 0.5;
+  double sites_per_pixel = 0.25;
   bool double_precision = false;
   double substep_tolerance_px = 0.0;
   double spread_deg2_per_s = 0.0;

@@ -22,7 +22,7 @@ void apply_quality_preset(const std::string& name, Settings& s) {
   } else if (name == "balanced") {
     s.precision = "float";
     s.state_sites_per_pixel = 0.25;
-    s.state_least_sites_per_deg = 20.0;  // 0.31 site/px at 1080p, 0.47 at 720p (docs/model.md)
+    s.state_least_sites_per_deg = 20.0;  // 0.31 site/px at 1080p, 0.47 at 720p, 0.5 below (docs/model.md)
     s.substep_tolerance_deg = 0.05;
     s.psf_model = "vos";
     s.glare_engine = "split";

@@ -12,8 +12,8 @@ namespace eyestream::pipeline {
 // reference: double-precision retina state at one site per pixel, a state
 //   step at every gaze sample, the exact Vos FFT glare, every acuity blur at
 //   full resolution. The yardstick.
-// balanced (default): float state at 0.25 sites per pixel and at least 20
-//   per degree (0.31 per pixel at 1080p), gaze samples
+// balanced (default): float state at 0.25 sites per pixel raised to 20
+//   per degree up to 0.5 (0.31 per pixel at 1080p), gaze samples
 //   within 0.05 deg share a step, the split glare engine with its tail at
 //   half resolution, acuity blurs from 12 px wide at reduced resolution.
 // fast: float state at 0.25 sites per pixel, samples within 0.25 deg share

@@ -170,11 +170,12 @@ ParamSet run_parameters(Settings& s) {
                  &s.receptors.gain_epsilon, 1e-6, 1));
   set.add(flag("bleaching-afterimages", "show bleaching afterimages", ai, &s.bleaching_afterimages));
   set.add(flag("adaptation-afterimages", "show local-adaptation afterimages", ai, &s.adaptation_afterimages));
-  set.add(number("state-resolution", "sites/px", "retina state sites per frame pixel along each axis", ai,
+  set.add(number("state-resolution", "sites/px",
+                 "retina state sites per frame pixel along each axis (raised to --state-least-density)", ai,
                  &s.state_sites_per_pixel, 0.0625, 1));
   set.add(number("state-least-density", "sites/deg",
-                 "the retina state's grid is never coarser than this at the frame's centre (it raises "
-                 "--state-resolution, up to 1 site/px); 0: no floor",
+                 "raises --state-resolution to this many sites per degree at the frame's centre, up to 0.5 "
+                 "site/px; 0: no floor",
                  ai, &s.state_least_sites_per_deg, 0, 1000));
   set.add(choice("precision", "retina state precision", ai, &s.precision, {"float", "double"}));
   set.add(number("substep-tolerance", "deg", "gaze samples closer than this share one state step; 0: every sample", ai,

@@ -79,8 +79,8 @@ struct Settings {
   bool bleaching_afterimages = true;
   bool adaptation_afterimages = true;
   double state_sites_per_pixel = 0.25;         // retinal grid resolution (1: one site per frame pixel)
-  // The grid is never coarser than this many sites per degree (at the
-  // frame's centre), up to one site per pixel; 0: no floor.
+  // The grid is raised to this many sites per degree (at the frame's
+  // centre), up to half a site per pixel; 0: no floor.
   double state_least_sites_per_deg = 20.0;
   std::string precision = "float";             // state precision: float or double
   double substep_tolerance_deg = 0.05;         // gaze samples closer than this share one state step; 0: every sample
