@@ -2,7 +2,6 @@
 
 #include <fftw3.h>
 
-#include <opencv2/core/utils/tls.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -80,23 +79,31 @@ void merge_row(const double* r0, const double* r1, const double* r2, double scal
 
 }  // namespace
 
-// A thread's arrays for one tile's transforms (each channel's window, then
-// its result, and one spectrum), made at its first tile and kept with the
-// engine: the frame loop asks the allocator for nothing.
+// One share of the tiles' arrays for their transforms (each channel's
+// window, then its result, and one spectrum), made by the calling thread
+// the first time a frame is split into that many shares and kept with the
+// engine: the frame loop asks the allocator for nothing, whichever threads
+// run the shares.
 struct TileArrays {
   double* real[3] = {};
   fftw_complex* spectrum = nullptr;
+  TileArrays(int t, size_t n) {
+    for (double*& r : real) r = fftw_alloc_real(size_t(t) * t);
+    spectrum = fftw_alloc_complex(n);
+  }
   ~TileArrays() {
     for (double* r : real) fftw_free(r);
     fftw_free(spectrum);
   }
+  TileArrays(const TileArrays&) = delete;
+  TileArrays& operator=(const TileArrays&) = delete;
 };
 
 struct TiledConvolver::Engine {
   int width = 0, height = 0, radius = 0, t = 0, block = 0, half = 0;
   std::vector<double> spectra[6];  // core, inner, outer, halo R, G, B: real parts, t x (t / 2 + 1)
   std::vector<double> combined;    // this frame's spectrum of each channel's kernel, 3 t (t / 2 + 1)
-  cv::TLSData<TileArrays> arrays;
+  std::vector<std::unique_ptr<TileArrays>> shares;  // one per share of a frame's tiles
   fftw_plan forward = nullptr, backward = nullptr;
 };
 
@@ -151,14 +158,15 @@ void TiledConvolver::convolve(const cv::Mat& rgb, const ChannelWeights& w, cv::M
   }
   const int across = (e.width + b - 1) / b, down = (e.height + b - 1) / b;
   const double scale = 1.0 / (double(t) * t);
-  cv::parallel_for_(cv::Range(0, across * down), [&](const cv::Range& range) {
-    TileArrays& a = e.arrays.getRef();
-    if (!a.spectrum) {
-      for (double*& real : a.real) real = fftw_alloc_real(size_t(t) * t);
-      a.spectrum = fftw_alloc_complex(n);
-    }
-    fftw_complex* spectrum = a.spectrum;
-    for (int tile = range.start; tile < range.end; ++tile) {
+  // The tiles in as many shares as threads, share k taking tiles k,
+  // k + shares, ...: each share has its own arrays.
+  const int tiles = across * down, shares = std::min(tiles, std::max(1, cv::getNumThreads()));
+  while (int(e.shares.size()) < shares) e.shares.push_back(std::make_unique<TileArrays>(t, n));
+  cv::parallel_for_(cv::Range(0, shares), [&](const cv::Range& range) {
+    for (int k = range.start; k < range.end; ++k)
+    for (int tile = k; tile < tiles; tile += shares) {
+      TileArrays& a = *e.shares[size_t(k)];
+      fftw_complex* spectrum = a.spectrum;
       // Output block [x0, x0 + b) x [y0, y0 + b) of the frame, read from
       // the window r pixels wider each way, every channel in one sweep; a
       // window cut by the frame's edge is zero beyond it.

@@ -6,10 +6,11 @@
 // transform moved its padded spectrum (17 MB a channel at 1080p) through
 // memory three times; a tile's transform stays in the core's cache, and
 // its kernel spectra take 1.6 MB instead of 52 (at 1080p, R = 16). A tile
-// whose window holds no light in a channel is not transformed. Each thread
-// keeps its tile arrays (a window per channel and a spectrum: 2.1 MB at
-// T = 256) with the engine, so the frame loop asks the allocator for
-// nothing; one engine convolves one frame at a time.
+// whose window holds no light in a channel is not transformed. The tiles
+// go in one share per thread, each with its arrays (a window per channel
+// and a spectrum: 2.1 MB at T = 256) kept with the engine, so the frame
+// loop asks the allocator for nothing; one engine convolves one frame at
+// a time.
 #pragma once
 
 #include <memory>

@@ -1,6 +1,7 @@
 #include "retina/gaussian_blur.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
@@ -69,29 +70,33 @@ void gaussian_blur(const cv::Mat& src, cv::Mat& dst, double sigma, const std::fu
   dst.create(src.size(), src.type());
   // A few stripes per thread: each keeps a ring of the 2r + 1 rows blurred
   // across that its next output row reads (row j in slot j mod 2r + 1).
+  // The rings are made here, one per stripe, not in the stripes as threads
+  // take them, so the frame loop asks the program's buffer pool for the
+  // same blocks every frame whichever threads run (it has them).
   const int span = 2 * r + 1;
-  cv::parallel_for_(
-      cv::Range(0, rows),
-      [&](const cv::Range& range) {
-        // A cv::Mat, so the program's buffer pool supplies it frame after
-        // frame, whichever thread runs the stripe.
-        cv::Mat ring(span, n, CV_32F);
-        const auto slot = [&](int j) { return ring.ptr<float>((j - range.start + span) % span); };
-        const auto fill = [&](int j) {
-          blur_row(input.ptr<float>(std::clamp(j, 0, rows - 1)), slot(j), cols, channels, w);
-          // Each row once: by the stripe it belongs to (the rows a stripe
-          // reads beyond its own, or replicated at the border, are another's).
-          if (source_row_read && j >= range.start && j < range.end) source_row_read(j);
-        };
-        for (int j = range.start - r; j < range.start + r; ++j) fill(j);
-        std::vector<const float*> rows_at(static_cast<size_t>(span));
-        for (int y = range.start; y < range.end; ++y) {
-          fill(y + r);
-          for (int t = -r; t <= r; ++t) rows_at[size_t(t + r)] = slot(y + t);
-          blur_column(&rows_at[size_t(r)], dst.ptr<float>(y), n, w);
-        }
-      },
-      double(std::max(1, cv::getNumThreads()) * 2));
+  const int stripes = std::min(rows, std::max(1, cv::getNumThreads()) * 2);
+  std::vector<cv::Mat> rings(static_cast<size_t>(stripes));
+  for (cv::Mat& ring : rings) ring.create(span, n, CV_32F);
+  cv::parallel_for_(cv::Range(0, stripes), [&](const cv::Range& shares) {
+    std::vector<const float*> rows_at(static_cast<size_t>(span));
+    for (int k = shares.start; k < shares.end; ++k) {
+      const cv::Range range(int(int64_t(rows) * k / stripes), int(int64_t(rows) * (k + 1) / stripes));
+      cv::Mat& ring = rings[size_t(k)];
+      const auto slot = [&](int j) { return ring.ptr<float>((j - range.start + span) % span); };
+      const auto fill = [&](int j) {
+        blur_row(input.ptr<float>(std::clamp(j, 0, rows - 1)), slot(j), cols, channels, w);
+        // Each row once: by the stripe it belongs to (the rows a stripe
+        // reads beyond its own, or replicated at the border, are another's).
+        if (source_row_read && j >= range.start && j < range.end) source_row_read(j);
+      };
+      for (int j = range.start - r; j < range.start + r; ++j) fill(j);
+      for (int y = range.start; y < range.end; ++y) {
+        fill(y + r);
+        for (int t = -r; t <= r; ++t) rows_at[size_t(t + r)] = slot(y + t);
+        blur_column(&rows_at[size_t(r)], dst.ptr<float>(y), n, w);
+      }
+    }
+  });
 }
 
 }  // namespace eyestream::retina

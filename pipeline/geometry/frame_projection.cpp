@@ -23,11 +23,10 @@ struct Affine {
 // to `out` (times `multiplier` when given; `outside` where nothing lands).
 template <typename T, int C>
 void splat_block(const cv::Mat& image, const cv::Mat& positions, Affine a, int r0, int first_row, int last_row,
-                 const cv::Scalar& outside, const cv::Mat& multiplier, cv::Mat& out) {
+                 const cv::Scalar& outside, const cv::Mat& multiplier, cv::Vec<T, C + 1>* sums, cv::Mat& out) {
   using Acc = cv::Vec<T, C + 1>;
   const int rows = std::min(kBlockRows, out.rows - r0), cols = out.cols;
-  thread_local std::vector<Acc> sums;  // reused: no page faults per call
-  sums.assign(size_t(rows) * size_t(cols), Acc::all(0));
+  std::fill(sums, sums + size_t(rows) * size_t(cols), Acc::all(0));
   const float kx = float(a.kx), ky = float(a.ky), offset = float(a.offset);
   for (int y = first_row; y <= last_row; ++y) {
     const T* in = image.ptr<T>(y);
@@ -83,8 +82,15 @@ void splat_rows(const cv::Mat& image, const cv::Mat& positions, Affine a, const 
     }
   });
   const int blocks = (out.rows + kBlockRows - 1) / kBlockRows;
-  cv::parallel_for_(cv::Range(0, blocks), [&](const cv::Range& r) {
-    for (int b = r.start; b < r.end; ++b) {
+  // One accumulator per share of the blocks, made here, not per thread as
+  // a thread first comes: the frame loop then asks the allocator for the
+  // same blocks every frame, whichever threads run (the pool has them).
+  const int shares = std::min(blocks, std::max(1, cv::getNumThreads()));
+  std::vector<cv::Mat> accumulators(static_cast<size_t>(shares));
+  for (cv::Mat& m : accumulators) m.create(1, int(sizeof(cv::Vec<T, C + 1>)) * kBlockRows * out.cols, CV_8U);
+  cv::parallel_for_(cv::Range(0, shares), [&](const cv::Range& r) {
+    for (int k = r.start; k < r.end; ++k)
+    for (int b = k; b < blocks; b += shares) {
       const int r0 = b * kBlockRows, r1 = std::min(out.rows, r0 + kBlockRows);
       int first = image.rows, last = -1;
       for (int y = 0; y < image.rows; ++y) {
@@ -92,7 +98,8 @@ void splat_rows(const cv::Mat& image, const cv::Mat& positions, Affine a, const 
         first = std::min(first, y);
         last = std::max(last, y);
       }
-      splat_block<T, C>(image, positions, a, r0, first, last, outside, multiplier, out);
+      splat_block<T, C>(image, positions, a, r0, first, last, outside, multiplier,
+                        accumulators[size_t(k)].ptr<cv::Vec<T, C + 1>>(), out);
     }
   });
 }
@@ -104,11 +111,16 @@ void splat_fixed(const cv::Mat& frame, const cv::Mat& positions, const std::vect
                  const std::vector<int>& bottom, const cv::Mat& norm, cv::Mat& out) {
   const int cols = out.cols, stride = cols + 2;
   const int blocks = (out.rows + kBlockRows - 1) / kBlockRows;
-  cv::parallel_for_(cv::Range(0, blocks), [&](const cv::Range& r) {
-    thread_local std::vector<cv::Vec3f> sums;
-    for (int b = r.start; b < r.end; ++b) {
+  // One accumulator per share of the blocks, made here (as splat_rows).
+  const int shares = std::min(blocks, std::max(1, cv::getNumThreads()));
+  std::vector<cv::Mat> accumulators(static_cast<size_t>(shares));
+  for (cv::Mat& m : accumulators) m.create(kBlockRows + 2, stride, CV_32FC3);
+  cv::parallel_for_(cv::Range(0, shares), [&](const cv::Range& r) {
+    for (int k = r.start; k < r.end; ++k)
+    for (int b = k; b < blocks; b += shares) {
+      cv::Vec3f* sums = accumulators[size_t(k)].ptr<cv::Vec3f>();
       const int r0 = b * kBlockRows, rows = std::min(kBlockRows, out.rows - r0);
-      sums.assign(size_t(rows + 2) * size_t(stride), cv::Vec3f(0, 0, 0));  // rows r0 - 1 .. r0 + rows
+      std::fill(sums, sums + size_t(rows + 2) * size_t(stride), cv::Vec3f(0, 0, 0));  // rows r0 - 1 .. r0 + rows
       for (int y = 0; y < frame.rows; ++y) {
         if (bottom[size_t(y)] < r0 || top[size_t(y)] >= r0 + rows) continue;
         const cv::Vec3f* in = frame.ptr<cv::Vec3f>(y);
