@@ -28,10 +28,10 @@ struct Bound {
 // The documented bounds (quality_presets.hpp) on 24 frames of the night
 // drive, the dusk scene and the night city at 256x144. Measured (flare
 // lines on; the split engine draws the tail's lines at its reduced
-// resolution): balanced p99 0.74 (night drive), 0.01 (dusk), 0.89 (night
-// city), its retina grid at one site per pixel on these 9 px/deg frames
-// (--state-least-density 20; at 0.35 site per pixel the dusk scene gave
-// 1.71); fast 1.02, 2.36 and 1.57.
+// resolution): balanced p99 0.86 (night drive), 1.18 (dusk), 1.05 (night
+// city), its retina grid at the floor's cap of 0.5 site per pixel on these
+// 9 px/deg frames (at 0.35 the dusk scene gave 1.71); fast 1.02, 2.36 and
+// 1.57.
 TEST(QualityPresets, EachPresetStaysWithinItsErrorBoundAgainstReference) {
   for (const std::string scene_name : {"night-drive", "dusk", "night-city"}) {
     if (test::kSanitized && scene_name != "night-city") continue;  // the one with most lights, under ASan

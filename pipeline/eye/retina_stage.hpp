@@ -40,7 +40,7 @@ class RetinaStage {
   // Makes the afterimage maps at the gaze (x, y) for composite() (drawn to
   // the frame, or on the frame's own plane kept on the grid until then),
   // right after advance(): then the state lets go of its equilibrium B_inf and
-  // response R (two grid images, 50 MB at 1080p in `balanced`), which
+  // response R (two grid images, about 19 MB at 1080p in `balanced`), which
   // only the afterimages and the next step read, so they are not held
   // through the frame's tone mapping and acuity loss; the next step makes
   // them again, and a checkpoint recomputes them from the last stimulus.
@@ -89,7 +89,7 @@ class RetinaStage {
   retina::RetinaState state_;
   cv::Mat visibility_;  // foveal fall-off of afterimages on the grid
   // The grid's stimulus with the eye closed (uniform dark), made when a
-  // blink needs it: kept for the whole run it held a grid image (25 MB at
+  // blink needs it: kept for the whole run it held a grid image (about 10 MB at
   // 1080p in `balanced`) through every open-eyed frame.
   cv::Mat dark_stimulus() const;
   bool started_ = false;

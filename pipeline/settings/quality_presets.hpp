@@ -15,10 +15,10 @@ namespace eyestream::pipeline {
 // balanced (default): float state at 0.25 sites per pixel raised to 20
 //   per degree up to 0.5 (0.31 per pixel at 1080p), gaze samples
 //   within 0.05 deg share a step, the split glare engine with its tail at
-//   half resolution, acuity blurs from 12 px wide at reduced resolution.
+//   half resolution, acuity blurs from 6 px wide at reduced resolution.
 // fast: float state at 0.25 sites per pixel, samples within 0.25 deg share
 //   a step, the split engine with its tail at quarter resolution, acuity
-//   blurs from 3 px wide at reduced resolution.
+//   blurs from 1.5 px wide at reduced resolution.
 // Every preset skips work a frame does not need (stage_activity.hpp).
 // UsageError for another name.
 // Documented error bounds against reference: the 99th percentile of
