@@ -33,6 +33,26 @@ TEST(FftConvolver, SmallKernelsMatchTheDirectSum) {
   }
 }
 
+// Transform sizes: the smallest n >= the minimum whose prime factors are
+// 2, 3, 5 and 7, and from 64 up a multiple of 16 as well (found here by
+// trial over every candidate).
+TEST(FftConvolver, TransformSizesAreSmoothMultiplesOfSixteen) {
+  const auto smooth = [](int n) {
+    for (int q : {2, 3, 5, 7})
+      while (n % q == 0) n /= q;
+    return n == 1;
+  };
+  for (int minimum = 1; minimum <= 5000; ++minimum) {
+    int want = minimum;
+    while (!smooth(want) || (minimum >= 64 && want % 16 != 0)) ++want;
+    ASSERT_EQ(fft_size(minimum), want) << minimum;
+  }
+  EXPECT_EQ(fft_size(1248), 1280);  // `balanced`'s middle level at 1080p, across (was 1250)
+  EXPECT_EQ(fft_size(828), 864);    // and down (was 840)
+  EXPECT_EQ(fft_size(3839), 3840);  // `reference`'s at 1080p, unchanged
+  EXPECT_EQ(fft_size(2159), 2160);
+}
+
 TEST(FftConvolver, RefusesAKernelThatIsNotPointSymmetric) {
   // Only real spectra are kept: a kernel with a complex spectrum would be
   // convolved as its symmetric part, so it is refused instead.

@@ -1,13 +1,17 @@
 // The angle plane of a rectilinear frame, checked against a pinhole camera
 // written out in the test (true_angle_oracle.hpp): distances from the
 // centre are true angles, local scales and solid angles are the camera's,
-// and carrying a frame into the plane keeps its light.
+// carrying a frame into the plane keeps its light and gives each plane
+// pixel its frame pixels' bilinear shares, and the way back samples the
+// plane bilinearly.
 #include "pipeline/geometry/frame_projection.hpp"
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <opencv2/core/utility.hpp>
+#include <vector>
 
 #include "tests/true_angle_oracle.hpp"
 
@@ -133,6 +137,98 @@ TEST(FrameProjection, ThePlaneIsTheSameWhateverTheThreadCount) {
   cv::setNumThreads(threads);
   EXPECT_EQ(cv::norm(one, many, cv::NORM_INF), 0.0);
   EXPECT_EQ(cv::norm(one_small, many_small, cv::NORM_INF), 0.0);
+}
+
+// Where the pinhole puts frame pixel (x, y) on the plane: its true angle
+// from the axis, times the plane's px per radian, from the plane's centre
+// in the ray's direction (index coordinates: pixel centres at integers).
+cv::Point2d plane_index(const FrameProjection& p, int x, int y) {
+  const cv::Vec3d r = kPinhole.ray(x + 0.5, y + 0.5);
+  const double theta = std::acos(r[2]), s = std::hypot(r[0], r[1]);
+  const double fp = p.pixels_per_degree() * 180.0 / M_PI;
+  const double k = s > 0.0 ? fp * theta / s : 0.0;
+  return {0.5 * p.plane_size().width + k * r[0] - 0.5, 0.5 * p.plane_size().height + k * r[1] - 0.5};
+}
+
+// Each plane pixel is the bilinear-weighted mean of the frame pixels that
+// land on it, times sin(theta) / theta at its own angle: summed here in
+// double, pixel by pixel, from the pinhole's positions.
+TEST(FrameProjection, TheFluxSplatIsEachPixelsBilinearShare) {
+  constexpr int w = 320, h = 180;
+  const FrameProjection p(w, h, 120.0, Projection::rectilinear);
+  ASSERT_EQ(kPinhole.width * h, kPinhole.height * w);  // the same camera, smaller
+  const test::PinholeFrame pinhole{w, h, 120.0};
+  cv::Mat frame(h, w, CV_32FC3);
+  cv::randu(frame, cv::Scalar::all(0.0), cv::Scalar::all(100.0));
+  const cv::Size plane = p.plane_size();
+  cv::Mat sums(plane, CV_64FC3, cv::Scalar::all(0.0)), weights(plane, CV_64F, cv::Scalar(0.0));
+  const double fp = p.pixels_per_degree() * 180.0 / M_PI;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const cv::Vec3d r = pinhole.ray(x + 0.5, y + 0.5);
+      const double theta = std::acos(r[2]), s = std::hypot(r[0], r[1]), k = s > 0.0 ? fp * theta / s : 0.0;
+      const double tx = 0.5 * plane.width + k * r[0] - 0.5, ty = 0.5 * plane.height + k * r[1] - 0.5;
+      const int i0 = int(std::floor(tx)), j0 = int(std::floor(ty));
+      const double fx = tx - i0, fy = ty - j0;
+      for (int dj = 0; dj < 2; ++dj)
+        for (int di = 0; di < 2; ++di) {
+          const int i = i0 + di, j = j0 + dj;
+          if (i < 0 || j < 0 || i >= plane.width || j >= plane.height) continue;
+          const double b = (di ? fx : 1.0 - fx) * (dj ? fy : 1.0 - fy);
+          sums.at<cv::Vec3d>(j, i) += b * cv::Vec3d(frame.at<cv::Vec3f>(y, x));
+          weights.at<double>(j, i) += b;
+        }
+    }
+  const cv::Mat got = p.to_plane_flux(frame);
+  ASSERT_EQ(got.size(), plane);
+  int checked = 0;
+  for (int v = 0; v < plane.height; ++v)
+    for (int u = 0; u < plane.width; ++u) {
+      const double b = weights.at<double>(v, u);
+      if (b < 0.25) continue;  // the frame's edge: a ray's rounding moves a share across
+      const double theta = std::hypot(u + 0.5 - 0.5 * plane.width, v + 0.5 - 0.5 * plane.height) / fp;
+      const double ratio = theta > 0.0 ? std::sin(theta) / theta : 1.0;
+      for (int c = 0; c < 3; ++c) {
+        const double want = sums.at<cv::Vec3d>(v, u)[c] / b * ratio;
+        ASSERT_NEAR(got.at<cv::Vec3f>(v, u)[c], want, 1e-4 * std::max(want, 1.0)) << u << "," << v << " c" << c;
+      }
+      ++checked;
+    }
+  EXPECT_GT(checked, plane.area() / 2);
+}
+
+// The way back: a plane holding a linear ramp comes back as the ramp at
+// each frame pixel's pinhole position (to cv::remap's 1/32 px steps), and
+// each row is handed to the finishing step once, as it was sampled.
+TEST(FrameProjection, TheWayBackSamplesThePlaneAndFinishesEachRowOnce) {
+  const FrameProjection p(kW, kH, 120.0, Projection::rectilinear);
+  const cv::Size plane = p.plane_size();
+  cv::Mat ramp(plane, CV_32FC3);
+  const double a = 0.5, b = -0.25, c = 1000.0;
+  for (int v = 0; v < plane.height; ++v)
+    for (int u = 0; u < plane.width; ++u)
+      ramp.at<cv::Vec3f>(v, u) = cv::Vec3f::all(float(a * u + b * v + c));
+  std::vector<std::atomic<int>> finished(static_cast<size_t>(kH));
+  cv::Mat out;
+  p.to_frame_image(ramp, out, [&](int y, float* row) {
+    ++finished[size_t(y)];
+    for (int x = 0; x < kW; ++x) row[3 * x + 1] += 1.0f;  // the green channel, once
+  });
+  const cv::Mat plain = p.to_frame_image(ramp);
+  int checked = 0;
+  for (int y = 0; y < kH; ++y) {
+    EXPECT_EQ(finished[size_t(y)].load(), 1) << "row " << y;
+    for (int x = 0; x < kW; ++x) {
+      const cv::Vec3f got = out.at<cv::Vec3f>(y, x);
+      ASSERT_EQ(got[1], plain.at<cv::Vec3f>(y, x)[1] + 1.0f);
+      ASSERT_EQ(got[0], plain.at<cv::Vec3f>(y, x)[0]);
+      const cv::Point2d q = plane_index(p, x, y);
+      if (q.x < 0 || q.y < 0 || q.x > plane.width - 1 || q.y > plane.height - 1) continue;  // the border repeats
+      ASSERT_NEAR(got[0], a * q.x + b * q.y + c, (std::abs(a) + std::abs(b)) / 32.0 + 1e-3) << x << "," << y;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, kW * kH / 2);
 }
 
 TEST(FrameProjection, AnEquidistantFrameIsItsOwnPlane) {

@@ -1,5 +1,6 @@
 #include "pipeline/eye/glare_stage.hpp"
 
+#include <array>
 #include <cstring>
 #include <utility>
 #include <opencv2/imgproc.hpp>
@@ -161,7 +162,8 @@ cv::Mat GlareStage::in_frame_share(const cv::Mat& ones, const glare::ChannelWeig
   return plane_->identity() ? spread_plane(ones, w) : moved_light(ones, w);
 }
 
-cv::Mat GlareStage::moved_light(const cv::Mat& rgb, const glare::ChannelWeights& w) const {
+cv::Mat GlareStage::moved_light(const cv::Mat& rgb, const glare::ChannelWeights& w,
+                                const FrameProjection::RowFinish& finish) const {
   const FrameProjection& p = *plane_;
   cv::Mat flux = p.to_plane_flux(to_glare_frame(rgb));
   cv::Mat scattered = spread_plane(flux, w);
@@ -173,7 +175,9 @@ cv::Mat GlareStage::moved_light(const cv::Mat& rgb, const glare::ChannelWeights&
     scattered = cv::max(scattered, 0.0);
   }
   flux.release();  // one plane fewer held while the frame image is made
-  return p.to_frame_image(scattered);
+  cv::Mat out;
+  p.to_frame_image(scattered, out, finish);
+  return out;
 }
 
 cv::Mat GlareStage::spread(const cv::Mat& rgb, const glare::PsfWeights& w, double surround) const {
@@ -185,20 +189,18 @@ cv::Mat GlareStage::spread(const cv::Mat& rgb, const glare::PsfWeights& w, doubl
   // The plane carries the light that leaves its pixel; the light the PSF
   // keeps there stays on the frame's pixels, sharp. The moved light (and
   // the surround's, which is as smooth) comes back to the frame's size in
-  // the same sweep that adds the kept light.
-  cv::Mat moved = moved_light(rgb, glare::same_in_every_channel(w));
-  add_surround(moved, w, surround);
+  // the same sweep that adds the kept light: the back-projection's own
+  // when the glare frame is the frame, else the enlargement's.
   const cv::Vec3f kept = kept_share(w);
-  if (moved.size() == rgb.size()) {
-    cv::parallel_for_(cv::Range(0, moved.rows), [&](const cv::Range& rows) {
-      for (int y = rows.start; y < rows.end; ++y) {
-        cv::Vec3f* o = moved.ptr<cv::Vec3f>(y);
-        const cv::Vec3f* in = rgb.ptr<cv::Vec3f>(y);
-        for (int x = 0; x < moved.cols; ++x) o[x] += kept.mul(in[x]);
-      }
+  const FrameProjection::RowFinish surround_row = surround_rows(w, surround);
+  if (halved_.empty())
+    return moved_light(rgb, glare::same_in_every_channel(w), [&](int y, float* row) {
+      if (surround_row) surround_row(y, row);
+      cv::Vec3f* o = reinterpret_cast<cv::Vec3f*>(row);
+      const cv::Vec3f* in = rgb.ptr<cv::Vec3f>(y);
+      for (int x = 0; x < rgb.cols; ++x) o[x] += kept.mul(in[x]);
     });
-    return moved;
-  }
+  cv::Mat moved = moved_light(rgb, glare::same_in_every_channel(w), surround_row);
   CV_Assert(moved.size() == halved_ && up_cols_ && up_rows_ && rgb.cols == int(up_cols_->w.size()) &&
             rgb.rows == int(up_rows_->w.size()));
   cv::Mat out(rgb.size(), CV_32FC3);
@@ -227,35 +229,41 @@ cv::Mat GlareStage::spread_plane(const cv::Mat& rgb, const glare::ChannelWeights
 }
 
 void GlareStage::add_surround(cv::Mat& light, const glare::PsfWeights& w, double surround) const {
-  if (!(surround > 0.0) || in_frame_.empty()) return;
+  const FrameProjection::RowFinish row = surround_rows(w, surround);
+  if (!row) return;
   CV_Assert(light.type() == CV_32FC3 && light.size() == in_frame_[0].size());
+  cv::parallel_for_(cv::Range(0, light.rows), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y) row(y, light.ptr<float>(y));
+  });
+}
+
+FrameProjection::RowFinish GlareStage::surround_rows(const glare::PsfWeights& w, double surround) const {
+  if (!(surround > 0.0) || in_frame_.empty()) return {};
   for (const cv::Mat& m : in_frame_) CV_Assert(m.depth() == CV_32F && m.isContinuous());
   const float s = float(surround);
-  const float weights[4] = {float(w.core), float(w.inner), float(w.outer), float(w.halo)};
+  const std::array<float, 4> weights = {float(w.core), float(w.inner), float(w.outer), float(w.halo)};
   // The maps hold the moved light only when the kept light is added later.
   const cv::Vec3f kept = plane_->identity() ? cv::Vec3f(0, 0, 0) : kept_share(w);
-  const size_t n = in_frame_.size();
-  int stride[4] = {};  // 3 for a coloured map, 1 for a grey one (one_channel_if_grey)
-  for (size_t c = 0; c < n; ++c) stride[c] = in_frame_[c].channels();
-  cv::parallel_for_(cv::Range(0, light.rows), [&](const cv::Range& rows) {
-    for (int y = rows.start; y < rows.end; ++y) {
-      cv::Vec3f* out = light.ptr<cv::Vec3f>(y);
-      const float* m[4] = {};
-      for (size_t c = 0; c < n; ++c) m[c] = in_frame_[c].ptr<float>(y);
-      for (int x = 0; x < light.cols; ++x) {
-        cv::Vec3f inside = kept;
-        for (size_t c = 0; c < n; ++c) {
-          const float* v = m[c] + x * stride[c];
-          const float wc = n == 1 ? 1.0f : weights[c];
-          if (stride[c] == 3)
-            inside += wc * cv::Vec3f(v[0], v[1], v[2]);
-          else
-            inside += cv::Vec3f::all(wc * v[0]);
-        }
-        for (int k = 0; k < 3; ++k) out[x][k] += s * std::max(0.0f, 1.0f - inside[k]);
+  return [this, s, weights, kept](int y, float* row) {
+    cv::Vec3f* out = reinterpret_cast<cv::Vec3f*>(row);
+    const size_t n = in_frame_.size();
+    const float* m[4] = {};
+    int stride[4] = {};  // 3 for a coloured map, 1 for a grey one (one_channel_if_grey)
+    for (size_t c = 0; c < n; ++c) m[c] = in_frame_[c].ptr<float>(y), stride[c] = in_frame_[c].channels();
+    const int cols = in_frame_[0].cols;
+    for (int x = 0; x < cols; ++x) {
+      cv::Vec3f inside = kept;
+      for (size_t c = 0; c < n; ++c) {
+        const float* v = m[c] + x * stride[c];
+        const float wc = n == 1 ? 1.0f : weights[c];
+        if (stride[c] == 3)
+          inside += wc * cv::Vec3f(v[0], v[1], v[2]);
+        else
+          inside += cv::Vec3f::all(wc * v[0]);
       }
+      for (int k = 0; k < 3; ++k) out[x][k] += s * std::max(0.0f, 1.0f - inside[k]);
     }
-  });
+  };
 }
 
 bool GlareStage::Cache::seen(const FrameDigest& rgb, const glare::PsfWeights& w, double s) const {

@@ -61,7 +61,9 @@ class GlareStage {
   cv::Mat spread(const cv::Mat& rgb, const glare::PsfWeights& w, double surround_cd_m2 = 0.0) const;
   // Off the frame's own plane: the light the PSF moves out of its pixel,
   // on the glare frame's pixels (the halved frame's, or the frame's).
-  cv::Mat moved_light(const cv::Mat& rgb, const glare::ChannelWeights& w) const;
+  // `finish` as FrameProjection::to_frame_image's.
+  cv::Mat moved_light(const cv::Mat& rgb, const glare::ChannelWeights& w,
+                      const FrameProjection::RowFinish& finish = {}) const;
   // What in_frame_ holds for a component: spread (the frame's own plane)
   // or moved_light of a frame of ones (each channel with its own weights:
   // a component per channel).
@@ -76,6 +78,8 @@ class GlareStage {
   // (spread's result on the frame's own plane, moved_light's otherwise,
   // whose M is the maps' plus the kept share).
   void add_surround(cv::Mat& light, const glare::PsfWeights& w, double surround_cd_m2) const;
+  // The same for one row y of `light` at a time (none without a surround).
+  FrameProjection::RowFinish surround_rows(const glare::PsfWeights& w, double surround_cd_m2) const;
 
   // The wave-optics lines of `light` (what the engine spread) added to
   // `retinal`, when the plan asks for them: into a new image when

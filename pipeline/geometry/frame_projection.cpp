@@ -104,51 +104,6 @@ void splat_rows(const cv::Mat& image, const cv::Mat& positions, Affine a, const 
   });
 }
 
-// The plane's fixed splat of a CV_32FC3 frame: the sums of b L into a
-// bordered accumulator (no bounds checks), times `norm` (the plane pixel's
-// solid-angle ratio over its sum of b, computed once).
-void splat_fixed(const cv::Mat& frame, const cv::Mat& positions, const std::vector<int>& top,
-                 const std::vector<int>& bottom, const cv::Mat& norm, cv::Mat& out) {
-  const int cols = out.cols, stride = cols + 2;
-  const int blocks = (out.rows + kBlockRows - 1) / kBlockRows;
-  // One accumulator per share of the blocks, made here (as splat_rows).
-  const int shares = std::min(blocks, std::max(1, cv::getNumThreads()));
-  std::vector<cv::Mat> accumulators(static_cast<size_t>(shares));
-  for (cv::Mat& m : accumulators) m.create(kBlockRows + 2, stride, CV_32FC3);
-  cv::parallel_for_(cv::Range(0, shares), [&](const cv::Range& r) {
-    for (int k = r.start; k < r.end; ++k)
-    for (int b = k; b < blocks; b += shares) {
-      cv::Vec3f* sums = accumulators[size_t(k)].ptr<cv::Vec3f>();
-      const int r0 = b * kBlockRows, rows = std::min(kBlockRows, out.rows - r0);
-      std::fill(sums, sums + size_t(rows + 2) * size_t(stride), cv::Vec3f(0, 0, 0));  // rows r0 - 1 .. r0 + rows
-      for (int y = 0; y < frame.rows; ++y) {
-        if (bottom[size_t(y)] < r0 || top[size_t(y)] >= r0 + rows) continue;
-        const cv::Vec3f* in = frame.ptr<cv::Vec3f>(y);
-        const cv::Vec2f* pos = positions.ptr<cv::Vec2f>(y);
-        for (int x = 0; x < frame.cols; ++x) {
-          // Plane positions are >= 0: truncation floors tx + 1 and ty + 1.
-          const float tx = pos[x][0] + 0.5f, ty = pos[x][1] + 0.5f;
-          const int i0 = int(tx) - 1, j0 = int(ty) - 1;
-          if (j0 + 1 < r0 || j0 >= r0 + rows) continue;
-          const float fx = tx - float(i0 + 1), fy = ty - float(j0 + 1);
-          cv::Vec3f* s = &sums[size_t(j0 - r0 + 1) * size_t(stride) + size_t(i0 + 1)];
-          const cv::Vec3f top_row = in[x] * (1.0f - fy), bottom_row = in[x] * fy;
-          s[0] += top_row * (1.0f - fx);
-          s[1] += top_row * fx;
-          s[stride] += bottom_row * (1.0f - fx);
-          s[stride + 1] += bottom_row * fx;
-        }
-      }
-      for (int j = 0; j < rows; ++j) {
-        cv::Vec3f* o = out.ptr<cv::Vec3f>(r0 + j);
-        const float* n = norm.ptr<float>(r0 + j);
-        const cv::Vec3f* s = &sums[size_t(j + 1) * size_t(stride) + 1];
-        for (int i = 0; i < cols; ++i) o[i] = s[i] * n[i];
-      }
-    }
-  });
-}
-
 cv::Mat splat_any(const cv::Mat& image, const cv::Mat& positions, Affine a, cv::Size size, const cv::Scalar& outside,
                   const cv::Mat& multiplier) {
   CV_Assert(positions.type() == CV_32FC2 && positions.size() == image.size());
@@ -212,26 +167,13 @@ FrameProjection::FrameProjection(int width, int height, double fov_deg, Projecti
         flux_ratio_.at<float>(v, u) = float(theta > 0.0 ? std::sin(theta) / theta : 1.0);
       }
   });
-  // The fixed splat's row reach and normalisation (the sum of b over the
-  // frame pixels landing on each plane pixel: the same every frame).
-  flux_top_.resize(size_t(height));
-  flux_bottom_.resize(size_t(height));
-  cv::parallel_for_(cv::Range(0, height), [&](const cv::Range& r) {
-    for (int y = r.start; y < r.end; ++y) {
-      float low = 1e30f, high = -1e30f;
-      const cv::Vec2f* p = positions_.ptr<cv::Vec2f>(y);
-      for (int x = 0; x < width; ++x) {
-        low = std::min(low, p[x][1]);
-        high = std::max(high, p[x][1]);
-      }
-      flux_top_[size_t(y)] = int(std::floor(low - 0.5f));
-      flux_bottom_[size_t(y)] = int(std::floor(high - 0.5f)) + 1;
-    }
-  });
+  // The fixed splat and its normalisation (the sum of b over the frame
+  // pixels landing on each plane pixel: the same every frame).
+  flux_splat_ = std::make_shared<const FixedSplat>(positions_, plane_);
   const cv::Mat weight = splat_any(cv::Mat(frame_, CV_32FC1, cv::Scalar(1.0)), positions_, Affine{1, 1, -0.5}, plane_,
                                    cv::Scalar(0.0), cv::Mat());  // 1 where covered, 0 beyond
   cv::Mat ones(frame_, CV_32FC3, cv::Scalar::all(1.0)), sums(plane_, CV_32FC3);
-  splat_fixed(ones, positions_, flux_top_, flux_bottom_, cv::Mat(plane_, CV_32F, cv::Scalar(1.0)), sums);
+  flux_splat_->apply(ones, cv::Mat(plane_, CV_32F, cv::Scalar(1.0)), sums);
   flux_norm_.create(plane_, CV_32F);
   cv::parallel_for_(cv::Range(0, plane_.height), [&](const cv::Range& r) {
     for (int v = r.start; v < r.end; ++v)
@@ -358,8 +300,8 @@ cv::Mat FrameProjection::to_plane_flux(const cv::Mat& frame) const {
   if (identity()) return frame;
   if (frame.type() != CV_32FC3)
     return splat_any(frame, positions_, Affine{1, 1, -0.5}, plane_, cv::Scalar::all(0.0), flux_ratio_);
-  cv::Mat out(plane_, CV_32FC3);
-  splat_fixed(frame, positions_, flux_top_, flux_bottom_, flux_norm_, out);
+  cv::Mat out;
+  flux_splat_->apply(frame, flux_norm_, out);
   return out;
 }
 
@@ -421,10 +363,28 @@ cv::Mat FrameProjection::gaze_positions(cv::Point2d gaze, cv::Size size, double 
 
 cv::Mat FrameProjection::to_frame_image(const cv::Mat& plane) const {
   if (identity()) return plane;
-  CV_Assert(plane.size() == plane_);
   cv::Mat out;
-  cv::remap(plane, out, remap1_, remap2_, cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+  to_frame_image(plane, out, {});
   return out;
+}
+
+void FrameProjection::to_frame_image(const cv::Mat& plane, cv::Mat& out, const RowFinish& finish) const {
+  CV_Assert(!identity() && plane.size() == plane_ && plane.type() == CV_32FC3);
+  out.create(frame_, CV_32FC3);
+  // Each stripe of rows through cv::remap (every pixel on its own, so any
+  // split gives the same values), then to `finish` while in the cache.
+  constexpr int kStripeRows = 8;
+  const int stripes = (frame_.height + kStripeRows - 1) / kStripeRows;
+  cv::parallel_for_(cv::Range(0, stripes), [&](const cv::Range& r) {
+    for (int s = r.start; s < r.end; ++s) {
+      const cv::Range rows(s * kStripeRows, std::min(frame_.height, (s + 1) * kStripeRows));
+      cv::Mat stripe = out.rowRange(rows);
+      cv::remap(plane, stripe, remap1_.rowRange(rows), remap2_.rowRange(rows), cv::INTER_LINEAR,
+                cv::BORDER_REPLICATE);
+      if (finish)
+        for (int y = rows.start; y < rows.end; ++y) finish(y, out.ptr<float>(y));
+    }
+  });
 }
 
 }  // namespace eyestream::pipeline

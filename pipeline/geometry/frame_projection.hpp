@@ -22,9 +22,13 @@
 // its own angle plane: nothing is resampled.
 #pragma once
 
+#include <functional>
+#include <memory>
 #include <opencv2/core.hpp>
 #include <string>
 #include <vector>
+
+#include "pipeline/geometry/fixed_splat.hpp"
 
 namespace eyestream::pipeline {
 
@@ -94,6 +98,11 @@ class FrameProjection {
   // A plane image (plane-sized) sampled bilinearly at every frame pixel's
   // direction.
   cv::Mat to_frame_image(const cv::Mat& plane) const;
+  // The same into `out`, handing each frame row to `finish` (row y, its
+  // pixels) while it is still in the cache: later per-pixel work in the
+  // same sweep. Rows go to `finish` in stripes on any thread.
+  using RowFinish = std::function<void(int y, float* row)>;
+  void to_frame_image(const cv::Mat& plane, cv::Mat& out, const RowFinish& finish) const;
   // The plane position of every frame pixel's centre (CV_32FC2).
   const cv::Mat& plane_positions() const { return positions_; }
 
@@ -115,7 +124,7 @@ class FrameProjection {
   cv::Mat remap1_, remap2_;     // positions as cv::remap's fixed-point maps
   cv::Mat flux_ratio_;          // CV_32F, plane-sized: sin(theta) / theta
   cv::Mat flux_norm_;           // CV_32F, plane-sized: flux_ratio_ over the sum of splat weights; 0 beyond the frame
-  std::vector<int> flux_top_, flux_bottom_;  // per frame row: the plane rows its splat reaches
+  std::shared_ptr<const FixedSplat> flux_splat_;  // the frame's pixels onto the plane, by fixed runs
 };
 
 }  // namespace eyestream::pipeline

@@ -28,7 +28,7 @@ void apply_quality_preset(const std::string& name, Settings& s) {
     s.glare_engine = "split";
     s.glare_tail_factor = 2;
     s.glare_resolution = 1.0;
-    s.acuity.pyramid_from_px = 6.0;
+    s.acuity.pyramid_from_px = 2.5;  // docs/performance.md: 6 px until 2026-12-05
     s.sink.video.preset = "veryfast";  // docs/performance.md: 63 MB less memory and 22 ms less CPU a 1080p frame than faster
     s.sink.video.b_frames = 0;         // docs/performance.md: x264 holds fewer frames
     s.sink.video.lookahead = 5;        // docs/performance.md: 30 MB less, PSNR 0.04 dB lower (veryfast: 10)

@@ -15,7 +15,7 @@ namespace eyestream::pipeline {
 // balanced (default): float state at 0.25 sites per pixel raised to 20
 //   per degree up to 0.5 (0.31 per pixel at 1080p), gaze samples
 //   within 0.05 deg share a step, the split glare engine with its tail at
-//   half resolution, acuity blurs from 6 px wide at reduced resolution.
+//   half resolution, acuity blurs from 2.5 px wide at reduced resolution.
 // fast: float state at 0.25 sites per pixel, samples within 0.25 deg share
 //   a step, the split engine with its tail at quarter resolution, acuity
 //   blurs from 1.5 px wide at reduced resolution.

@@ -171,7 +171,7 @@ ParamSet run_parameters(Settings& s) {
   set.add(flag("bleaching-afterimages", "show bleaching afterimages", ai, &s.bleaching_afterimages));
   set.add(flag("adaptation-afterimages", "show local-adaptation afterimages", ai, &s.adaptation_afterimages));
   set.add(number("state-resolution", "sites/px",
-                 "retina state sites per frame pixel along each axis (raised to --state-least-density)", ai,
+                 "retina state sites per frame pixel along each axis (raised to --state-least-density, by that at most to 0.5)", ai,
                  &s.state_sites_per_pixel, 0.0625, 1));
   set.add(number("state-least-density", "sites/deg",
                  "raises --state-resolution to this many sites per degree at the frame's centre, up to 0.5 "

@@ -1,0 +1,141 @@
+#include "pipeline/geometry/fixed_splat.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace eyestream::pipeline {
+
+namespace {
+
+constexpr int kBlockRows = 32;  // plane rows per task
+
+// The plane row above a position's bilinear footprint, and the column left
+// of it. Positions are >= 0, so truncation floors t + 1.
+inline int row_above(float y) { return int(y + 0.5f) - 1; }
+
+// A bilinear splat's two neighbouring sums in one accumulator row: the
+// left one written at once, the right one held until the next pixel.
+struct Pending {
+  cv::Vec3f* at = nullptr;
+  cv::Vec3f value;
+  cv::Vec3f take(cv::Vec3f* p) const { return p == at ? value : *p; }
+  void add(cv::Vec3f* left, const cv::Vec3f& to_left, const cv::Vec3f& to_right) {
+    const cv::Vec3f l = take(left), r = take(left + 1);
+    if (at && at != left && at != left + 1) *at = value;
+    *left = l + to_left;
+    at = left + 1;
+    value = r + to_right;
+  }
+  void flush() {
+    if (at) *at = value;
+    at = nullptr;
+  }
+};
+
+}  // namespace
+
+FixedSplat::FixedSplat(const cv::Mat& positions, cv::Size plane) : positions_(positions), plane_(plane) {
+  CV_Assert(positions.type() == CV_32FC2 && !plane.empty());
+  const int blocks = (plane.height + kBlockRows - 1) / kBlockRows;
+  // The plane rows each frame row reaches at most.
+  std::vector<int> top(size_t(positions.rows)), bottom(size_t(positions.rows));
+  for (int y = 0; y < positions.rows; ++y) {
+    float low = 1e30f, high = -1e30f;
+    const cv::Vec2f* pos = positions.ptr<cv::Vec2f>(y);
+    for (int x = 0; x < positions.cols; ++x) {
+      low = std::min(low, pos[x][1]);
+      high = std::max(high, pos[x][1]);
+    }
+    top[size_t(y)] = int(std::floor(low - 0.5f));
+    bottom[size_t(y)] = int(std::floor(high - 0.5f)) + 1;
+  }
+  // Each block's runs: the pixels, of the frame rows that can reach the
+  // block, whose footprint's rows j0, j0 + 1 meet the block's rows
+  // [r0, r0 + rows).
+  std::vector<std::vector<Run>> per_block(static_cast<size_t>(blocks));
+  cv::parallel_for_(cv::Range(0, blocks), [&](const cv::Range& r) {
+    for (int b = r.start; b < r.end; ++b) {
+      const int r0 = b * kBlockRows, rows = std::min(kBlockRows, plane.height - r0);
+      std::vector<Run>& runs = per_block[size_t(b)];
+      for (int y = 0; y < positions.rows; ++y) {
+        if (bottom[size_t(y)] < r0 || top[size_t(y)] >= r0 + rows) continue;
+        const cv::Vec2f* pos = positions.ptr<cv::Vec2f>(y);
+        int start = -1;
+        for (int x = 0; x <= positions.cols; ++x) {
+          bool in = false;
+          if (x < positions.cols) {
+            const int j0 = row_above(pos[x][1]);
+            in = j0 + 1 >= r0 && j0 < r0 + rows;
+          }
+          if (in && start < 0) start = x;
+          if (!in && start >= 0) {
+            runs.push_back({y, start, x});
+            start = -1;
+          }
+        }
+      }
+    }
+  });
+  first_run_.push_back(0);
+  for (const std::vector<Run>& runs : per_block) {
+    runs_.insert(runs_.end(), runs.begin(), runs.end());
+    first_run_.push_back(runs_.size());
+  }
+}
+
+void FixedSplat::apply(const cv::Mat& frame, const cv::Mat& factor, cv::Mat& out) const {
+  CV_Assert(frame.type() == CV_32FC3 && frame.size() == positions_.size() && factor.type() == CV_32F &&
+            factor.size() == plane_);
+  out.create(plane_, CV_32FC3);
+  const int cols = plane_.width, stride = cols + 2;
+  const int blocks = int(first_run_.size()) - 1;
+  // One accumulator per share of the blocks, made by the calling thread,
+  // share k taking blocks k, k + shares, ...: the frame loop asks the
+  // allocator for the same blocks every frame, whichever threads run. Each
+  // accumulator has a border row and column each way (no bounds checks).
+  const int shares = std::min(blocks, std::max(1, cv::getNumThreads()));
+  std::vector<cv::Mat> accumulators(static_cast<size_t>(shares));
+  for (cv::Mat& m : accumulators) m.create(kBlockRows + 2, stride, CV_32FC3);
+  cv::parallel_for_(cv::Range(0, shares), [&](const cv::Range& r) {
+    for (int k = r.start; k < r.end; ++k)
+      for (int b = k; b < blocks; b += shares) {
+        cv::Vec3f* sums = accumulators[size_t(k)].ptr<cv::Vec3f>();
+        const int r0 = b * kBlockRows, rows = std::min(kBlockRows, plane_.height - r0);
+        std::fill(sums, sums + size_t(rows + 2) * size_t(stride), cv::Vec3f(0, 0, 0));  // rows r0 - 1 .. r0 + rows
+        for (size_t i = first_run_[size_t(b)]; i < first_run_[size_t(b) + 1]; ++i) {
+          const Run& run = runs_[i];
+          const cv::Vec3f* in = frame.ptr<cv::Vec3f>(run.y);
+          const cv::Vec2f* pos = positions_.ptr<cv::Vec2f>(run.y);
+          // The right column's sum stays in a register for the next pixel,
+          // which usually lands one column on: each sum still takes its
+          // terms in frame order, with no store and reload between them.
+          Pending top, bottom;
+          int held_row = -2;
+          for (int x = run.x0; x < run.x1; ++x) {
+            const float tx = pos[x][0] + 0.5f, ty = pos[x][1] + 0.5f;
+            const int i0 = int(tx) - 1, j0 = int(ty) - 1;
+            if (j0 != held_row) {  // a new pair of rows: one's held sum may be the other's
+              top.flush();
+              bottom.flush();
+              held_row = j0;
+            }
+            const float fx = tx - float(i0 + 1), fy = ty - float(j0 + 1);
+            cv::Vec3f* s = &sums[size_t(j0 - r0 + 1) * size_t(stride) + size_t(i0 + 1)];
+            const cv::Vec3f top_row = in[x] * (1.0f - fy), bottom_row = in[x] * fy;
+            top.add(s, top_row * (1.0f - fx), top_row * fx);
+            bottom.add(s + stride, bottom_row * (1.0f - fx), bottom_row * fx);
+          }
+          top.flush();
+          bottom.flush();
+        }
+        for (int j = 0; j < rows; ++j) {
+          cv::Vec3f* o = out.ptr<cv::Vec3f>(r0 + j);
+          const float* f = factor.ptr<float>(r0 + j);
+          const cv::Vec3f* s = &sums[size_t(j + 1) * size_t(stride) + 1];
+          for (int i = 0; i < cols; ++i) o[i] = s[i] * f[i];
+        }
+      }
+  });
+}
+
+}  // namespace eyestream::pipeline
