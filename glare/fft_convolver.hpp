@@ -60,7 +60,8 @@ class FftConvolver {
   std::unique_ptr<Engine> engine_;
 };
 
-// The smallest n >= minimum whose prime factors are 2, 3, 5 and 7 (fast FFT sizes).
+// The smallest n >= minimum whose prime factors are 2, 3, 5 and 7, and from
+// 64 up a multiple of 16 as well (fast FFT sizes for estimated plans).
 int fft_size(int minimum);
 
 }  // namespace eyestream::glare

@@ -59,9 +59,10 @@ void MesopicStage::render(cv::Mat rgb, const retina::ToneCurve& curve, double ad
   cv::Mat rho;
   if (local) {
     const double sigma = plan_.mesopic.colour.local_sigma_deg * plan_.pixels_per_degree;
-    // Held reduced as the acuity's levels are (pyramid_from_px: `fast`
-    // only at 1080p): the luminance low-passed on a grid reduced by f, rho
-    // there, read back bilinearly.
+    // Held reduced as the acuity's levels are (pyramid_from_px: at 1080p's
+    // 64 px/deg a quarter each way in `balanced`, an eighth in `fast`):
+    // the luminance low-passed on a grid reduced by f, rho there, read back
+    // bilinearly.
     const double from_px = plan_.mesopic.acuity_params.pyramid_from_px;
     int f = 1;
     while (from_px > 0.0 && sigma / (2 * f) >= from_px / 2 && floored.cols / (2 * f) >= 8 && floored.rows / (2 * f) >= 8)
