@@ -3,6 +3,7 @@
 #include "retina/acuity_curve.hpp"
 #include "retina/bilinear_axis.hpp"
 #include "retina/gaussian_blur.hpp"
+#include "retina/vector_clones.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -37,6 +38,20 @@ namespace {
 // The noise's share at rho: whole through the mesopic range, fading to
 // nothing across the first decade of photopic light (rho 1 to 1.5).
 double noise_share(double rho) { return std::clamp((1.5 - rho) / 0.5, 0.0, 1.0); }
+
+// k_row[x] = the first i with level[x] > tau[i] (n when none). The
+// thresholds fall with i, so the bands not kept are a prefix and k counts
+// them: vectorised over the row, one threshold at a time. Returns the
+// row's largest k.
+EYESTREAM_VECTOR_CLONES
+std::uint8_t first_kept_row(const float* level, const std::vector<float>& tau, std::uint8_t* k_row, int cols) {
+  std::fill(k_row, k_row + cols, std::uint8_t(0));
+  for (const float t : tau)
+    for (int x = 0; x < cols; ++x) k_row[x] = std::uint8_t(k_row[x] + !(level[x] > t));
+  std::uint8_t deepest = 0;
+  for (int x = 0; x < cols; ++x) deepest = std::max(deepest, k_row[x]);
+  return deepest;
+}
 
 }  // namespace
 
@@ -106,8 +121,7 @@ void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
   // read bilinearly; its blur counts what the reductions (f^2 / 4 px^2 per
   // halving) and the bilinear read (f^2 / 6) add, so every level's variance
   // stays sigma_i^2.
-  const int n = params_.bands;
-  std::vector<float> tau(tau_.begin(), tau_.end());
+  const std::vector<float> tau(tau_.begin(), tau_.end());
   // The first kept band of each pixel (n: none kept), and the coarsest any
   // pixel takes: levels beyond it are not made.
   cv::Mat first(image.size(), CV_8U);
@@ -115,15 +129,7 @@ void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
   cv::parallel_for_(cv::Range(0, image.rows), [&](const cv::Range& rows) {
     for (int y = rows.start; y < rows.end; ++y) {
       const float* lv = level.ptr<float>(y);
-      std::uint8_t* k_row = first.ptr<std::uint8_t>(y);
-      std::uint8_t deepest = 0;
-      for (int x = 0; x < image.cols; ++x) {
-        int k = 0;
-        while (k < n && !(lv[x] > tau[size_t(k)])) ++k;
-        k_row[x] = std::uint8_t(k);
-        deepest = std::max(deepest, k_row[x]);
-      }
-      row_deepest[size_t(y)] = deepest;
+      row_deepest[size_t(y)] = first_kept_row(lv, tau, first.ptr<std::uint8_t>(y), image.cols);
     }
   });
   const int deepest = *std::max_element(row_deepest.begin(), row_deepest.end());

@@ -114,13 +114,15 @@ TEST(SplitEngine, PerChannelWeightsGiveEachChannelWhatSharedWeightsGive) {
 }
 
 // Stated error on the headlights scene: the spread excess differs from the
-// exact engine's by at most 2 % of the exact value plus 0.5 cd/m^2 (middle
-// factor 2) or 5 % plus 1 cd/m^2 (factor 4) at every pixel, on a 640x360
-// frame (measured with the three-level engine: 85 % of the factor-2 bound,
-// 93 % of the factor-4 one). With the tail at 4 times the middle's
-// reduction handing over at 8 f_tail pixels instead of 16, the factor-2
-// error was 2.1 times its bound: the tail's hand-over must lie where its
-// blocks are small against the PSF's change.
+// exact engine's by at most 1.5 % of the exact value plus 0.375 cd/m^2
+// (middle factor 2) or 3.5 % plus 0.7 cd/m^2 (factor 4) at every pixel, on
+// a 640x360 frame. Measured: 84 % and 91 % of these bounds; 113 % and
+// 133 % with the middle band unsharpened (split_convolver.cpp), which met
+// the bounds of 2026-12-05 (2 % + 0.5, 5 % + 1) with 85 % and 93 %. With
+// the tail at 4 times the middle's reduction handing over at 8 f_tail
+// pixels instead of 16, the factor-2 error was 2.1 times its 2 % + 0.5
+// bound: the tail's hand-over must lie where its blocks are small against
+// the PSF's change.
 // The largest |split - exact| / (relative exact + absolute) over every
 // pixel and channel: at most 1 when the split engine is within the bound.
 double worst_against(const cv::Mat& exact_image, const cv::Mat& split, double relative, double absolute) {
@@ -137,7 +139,7 @@ double worst_against(const cv::Mat& exact_image, const cv::Mat& split, double re
 TEST(SplitEngine, HeadlightsRetinalImageWithinItsStatedErrorOfTheExactEngine) {
   const cv::Mat excess = headlight_excess();
   const cv::Mat reference = exact().convolve(excess, night_weights());
-  for (const auto& [factor, relative, absolute] : {std::tuple{2, 0.02, 0.5}, std::tuple{4, 0.05, 1.0}}) {
+  for (const auto& [factor, relative, absolute] : {std::tuple{2, 0.015, 0.375}, std::tuple{4, 0.035, 0.7}}) {
     const cv::Mat split = SplitConvolver(kW, kH, kPpd, factor).convolve(excess, night_weights());
     const double worst = worst_against(reference, split, relative, absolute);
     std::cout << "factor " << factor << ": " << worst << " of the bound\n";
@@ -147,7 +149,8 @@ TEST(SplitEngine, HeadlightsRetinalImageWithinItsStatedErrorOfTheExactEngine) {
 
 TEST(SplitEngine, WithFlareLinesTheHeadlightsErrorIsLargerAndStated) {
   // The tail's streaks are drawn at the tail's resolution: wider and
-  // fainter than the exact engine's (flare_lines.hpp).
+  // fainter than the exact engine's (flare_lines.hpp). Measured: 91 % and
+  // 96 % of the bounds; 82 % and 87 % with the middle band unsharpened.
   const EyeOptics optics({}, PsfModel::vos, true, 0.0, kPpd);
   const cv::Mat excess = headlight_excess();
   const cv::Mat reference =

@@ -7,6 +7,7 @@
 
 #include "glare/uniform_field.hpp"
 #include "glare/veiling_luminance.hpp"
+#include "pipeline/eye/surround_row.hpp"
 #include "retina/enlarged_rows.hpp"
 #include "retina/luminance.hpp"
 #include "retina/vector_clones.hpp"
@@ -239,30 +240,18 @@ void GlareStage::add_surround(cv::Mat& light, const glare::PsfWeights& w, double
 
 FrameProjection::RowFinish GlareStage::surround_rows(const glare::PsfWeights& w, double surround) const {
   if (!(surround > 0.0) || in_frame_.empty()) return {};
+  CV_Assert(in_frame_.size() <= 4);
   for (const cv::Mat& m : in_frame_) CV_Assert(m.depth() == CV_32F && m.isContinuous());
   const float s = float(surround);
   const std::array<float, 4> weights = {float(w.core), float(w.inner), float(w.outer), float(w.halo)};
   // The maps hold the moved light only when the kept light is added later.
   const cv::Vec3f kept = plane_->identity() ? cv::Vec3f(0, 0, 0) : kept_share(w);
   return [this, s, weights, kept](int y, float* row) {
-    cv::Vec3f* out = reinterpret_cast<cv::Vec3f*>(row);
-    const size_t n = in_frame_.size();
-    const float* m[4] = {};
-    int stride[4] = {};  // 3 for a coloured map, 1 for a grey one (one_channel_if_grey)
-    for (size_t c = 0; c < n; ++c) m[c] = in_frame_[c].ptr<float>(y), stride[c] = in_frame_[c].channels();
-    const int cols = in_frame_[0].cols;
-    for (int x = 0; x < cols; ++x) {
-      cv::Vec3f inside = kept;
-      for (size_t c = 0; c < n; ++c) {
-        const float* v = m[c] + x * stride[c];
-        const float wc = n == 1 ? 1.0f : weights[c];
-        if (stride[c] == 3)
-          inside += wc * cv::Vec3f(v[0], v[1], v[2]);
-        else
-          inside += cv::Vec3f::all(wc * v[0]);
-      }
-      for (int k = 0; k < 3; ++k) out[x][k] += s * std::max(0.0f, 1.0f - inside[k]);
-    }
+    SurroundShares shares;
+    shares.count = in_frame_.size();
+    for (size_t c = 0; c < shares.count; ++c)
+      shares.maps[c] = in_frame_[c].ptr<float>(y), shares.strides[c] = in_frame_[c].channels();
+    add_surround_row(shares, weights, kept, s, row, in_frame_[0].cols);
   };
 }
 

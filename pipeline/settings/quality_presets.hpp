@@ -18,7 +18,7 @@ namespace eyestream::pipeline {
 //   half resolution, acuity blurs from 2.5 px wide at reduced resolution.
 // fast: float state at 0.25 sites per pixel, samples within 0.25 deg share
 //   a step, the split engine with its tail at quarter resolution, acuity
-//   blurs from 1.5 px wide at reduced resolution.
+//   blurs from 1.2 px wide at reduced resolution.
 // Every preset skips work a frame does not need (stage_activity.hpp).
 // UsageError for another name.
 // Documented error bounds against reference: the 99th percentile of
