@@ -72,7 +72,7 @@ TEST(LocalMesopic, ColouredLightsKeepTheirHueOnADarkRoad) {
   EXPECT_GT(hue_difference(hue_deg(old.at<cv::Vec3f>(60, 80)), hue_deg(colours[0])), 30.0);
 }
 
-// With --acuity-pyramid-from set (fast: 1.5 px) a low-pass at least that
+// With --acuity-pyramid-from set (fast: 1.2 px) a low-pass at least that
 // wide runs on the frame reduced by a power of two and rho is read back
 // bilinearly: the lights keep the colours the full-resolution low-pass
 // gives them.
