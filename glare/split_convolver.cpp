@@ -31,10 +31,10 @@ double near_window(double r, double radius) {
 // overshoot at their edges when sharpened more.
 constexpr double kMiddleSharpening = 1.0 / 8.0;
 
-// kernel -= c lap(profile).
-void sharpen(cv::Mat& kernel, const cv::Mat& profile, double c) {
+// kernel -= c lap(kernel).
+void sharpen(cv::Mat& kernel, double c) {
   cv::Mat lap;
-  cv::Laplacian(profile, lap, CV_64F, 1, 1.0, 0.0, cv::BORDER_CONSTANT);
+  cv::Laplacian(kernel, lap, CV_64F, 1, 1.0, 0.0, cv::BORDER_CONSTANT);
   kernel -= c * lap;
 }
 
@@ -143,7 +143,7 @@ SplitConvolver::SplitConvolver(int width, int height, double ppd, int factor, co
   const int reach = int(std::ceil(r1 / f1));
   ComponentKernels middle = build_component_kernels(reach + 1, reach + 1, ppd / f1, optics);
   for (cv::Mat* k : components(middle)) apply_band(*k, f1, r0, r1);
-  for (cv::Mat* k : components(middle)) sharpen(*k, *k, kMiddleSharpening);
+  for (cv::Mat* k : components(middle)) sharpen(*k, kMiddleSharpening);
   // Tail: K (1 - w_1), the whole frame's reach.
   ComponentKernels tail = build_component_kernels(padded_w / f2, padded_h / f2, ppd / f2, optics);
   for (cv::Mat* k : components(tail)) apply_window(*k, f2, r1, true);

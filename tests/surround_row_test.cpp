@@ -48,7 +48,9 @@ TEST(SurroundRow, IsTheSurroundTimesThePsfShareOutsideTheFrame) {
   cv::Mat single = base.clone();
   add_surround_row(one, weights, cv::Vec3f(0, 0, 0), s, single.ptr<float>(), cols);
   for (int x = 0; x < cols; ++x)
-    EXPECT_NEAR(single.at<cv::Vec3f>(x)[1], base.at<cv::Vec3f>(x)[1] + s * (1.0 - grey.at<float>(x)), 1e-5 * 20);
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(single.at<cv::Vec3f>(x)[k], base.at<cv::Vec3f>(x)[k] + s * (1.0 - grey.at<float>(x)), 1e-5 * 20)
+          << "one grey map, x " << x << ", channel " << k;
 }
 
 }  // namespace
