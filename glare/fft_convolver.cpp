@@ -17,17 +17,33 @@ namespace eyestream::glare {
 
 namespace {
 
-// FFTW's interface, under names the engine reads well with.
+// FFTW's interface, under names the engine reads well with. A problem
+// FFTW cannot plan without buffering (some odd sizes: the plan comes back
+// null) is planned with it, by estimate.
 struct Fftw {
   using Plan = fftw_plan;
   using Complex = fftw_complex;
   static double* real(size_t n) { return fftw_alloc_real(n); }
   static Complex* complex(size_t n) { return fftw_alloc_complex(n); }
   static void free(void* p) { fftw_free(p); }
-  static Plan r2c(int n, double* in, Complex* out) { return fftw_plan_dft_r2c_1d(n, in, out, FFTW_ESTIMATE); }
-  static Plan c2r(int n, Complex* in, double* out) { return fftw_plan_dft_c2r_1d(n, in, out, FFTW_ESTIMATE); }
-  static Plan columns(int n, int howmany, int stride, Complex* data, int sign) {
-    return fftw_plan_many_dft(1, &n, howmany, data, nullptr, stride, 1, data, nullptr, stride, 1, sign, FFTW_ESTIMATE);
+  template <typename Make>
+  static Plan plan(const Make& make) {
+    Plan p = make(fftw_plan_rigor());
+    if (!p) p = make(unsigned(FFTW_ESTIMATE));
+    CV_Assert(p != nullptr);
+    return p;
+  }
+  static Plan r2c(int n, double* in, Complex* out) {
+    return plan([&](unsigned flags) { return fftw_plan_dft_r2c_1d(n, in, out, flags); });
+  }
+  static Plan c2r(int n, Complex* in, double* out) {
+    return plan([&](unsigned flags) { return fftw_plan_dft_c2r_1d(n, in, out, flags); });
+  }
+  // `howmany` contiguous transforms of n points, one after the other.
+  static Plan columns(int n, int howmany, Complex* data, int sign) {
+    return plan([&](unsigned flags) {
+      return fftw_plan_many_dft(1, &n, howmany, data, nullptr, 1, n, data, nullptr, 1, n, sign, flags);
+    });
   }
   static void r2c(Plan p, double* in, Complex* out) { fftw_execute_dft_r2c(p, in, out); }
   static void c2r(Plan p, Complex* in, double* out) { fftw_execute_dft_c2r(p, in, out); }
@@ -110,10 +126,12 @@ class RowColumnEngine final : public FftConvolver::Engine {
     F::free(row);
     F::free(spectrum_row);
     const int last = nc_ % kColumnBlock;
+    F::Complex* columns = F::complex(size_t(ny) * kColumnBlock);
     for (int sign : {FFTW_FORWARD, FFTW_BACKWARD}) {
-      column_[sign == FFTW_FORWARD ? 0 : 1][0] = F::columns(ny, kColumnBlock, kColumnBlock, data_, sign);
-      column_[sign == FFTW_FORWARD ? 0 : 1][1] = last ? F::columns(ny, last, kColumnBlock, data_, sign) : nullptr;
+      column_[sign == FFTW_FORWARD ? 0 : 1][0] = F::columns(ny, kColumnBlock, columns, sign);
+      column_[sign == FFTW_FORWARD ? 0 : 1][1] = last ? F::columns(ny, last, columns, sign) : nullptr;
     }
+    F::free(columns);
   }
 
   ~RowColumnEngine() override {
@@ -124,6 +142,7 @@ class RowColumnEngine final : public FftConvolver::Engine {
       for (auto& p : pair)
         if (p) F::destroy(p);
     F::free(data_);
+    for (F::Complex* c : columns_) F::free(c);
   }
 
   void convolve(const cv::Mat& rgb, const ChannelWeights& w, cv::Mat& out) const override {
@@ -155,30 +174,50 @@ class RowColumnEngine final : public FftConvolver::Engine {
       F::free(row);
       F::free(spectrum);
     });
-    // Columns: forward, times the channel's kernel, back; block by block.
+    // Columns: forward, times the channel's kernel, back; block by block,
+    // each block's columns copied one after the other into its share's
+    // array first and back after (FFTW's own buffered plans for strided
+    // columns allocate their buffers at every execution).
     const int blocks = (nc_ + kColumnBlock - 1) / kColumnBlock;
+    const int shares = std::min(blocks, std::max(1, cv::getNumThreads()));
+    while (int(columns_.size()) < shares) columns_.push_back(F::complex(size_t(ny) * kColumnBlock));
     const T weight[4] = {T(w.core), T(w.inner), T(w.outer), T(w.halo)};
-    cv::parallel_for_(cv::Range(0, blocks), [&](const cv::Range& r) {
-      for (int b = r.start; b < r.end; ++b) {
+    cv::parallel_for_(cv::Range(0, shares), [&](const cv::Range& r) {
+      for (int k = r.start; k < r.end; ++k)
+      for (int b = k; b < blocks; b += shares) {
         const int x0 = b * kColumnBlock;
         const int n = std::min(kColumnBlock, nc_ - x0), partial = n < kColumnBlock;
         F::Complex* block = at(b, 0);
-        F::c2c(column_[0][partial], block);
+        T* column = reinterpret_cast<T*>(columns_[size_t(k)]);  // column j's value y at 2 (j ny + y)
+        for (int y = 0; y < ny; ++y) {
+          const T* v = reinterpret_cast<const T*>(block + size_t(y) * kColumnBlock);
+          for (int j = 0; j < n; ++j) {
+            column[2 * (size_t(j) * ny + y)] = v[2 * j];
+            column[2 * (size_t(j) * ny + y) + 1] = v[2 * j + 1];
+          }
+        }
+        F::c2c(column_[0][partial], columns_[size_t(k)]);
         const size_t start = size_t(b) * ny * kColumnBlock;
         const T* k0 = spectra_[0].data() + start;
         const T* k1 = spectra_[1].data() + start;
         const T* k2 = spectra_[2].data() + start;
         const T* k3 = spectra_[3 + c].data() + start;
         for (int y = 0; y < ny; ++y) {
-          T* v = reinterpret_cast<T*>(block + size_t(y) * kColumnBlock);
           const size_t o = size_t(y) * kColumnBlock;
           for (int j = 0; j < n; ++j) {
             const T kr = weight[0] * k0[o + j] + weight[1] * k1[o + j] + weight[2] * k2[o + j] + weight[3] * k3[o + j];
-            v[2 * j] *= kr;
-            v[2 * j + 1] *= kr;
+            column[2 * (size_t(j) * ny + y)] *= kr;
+            column[2 * (size_t(j) * ny + y) + 1] *= kr;
           }
         }
-        F::c2c(column_[1][partial], block);
+        F::c2c(column_[1][partial], columns_[size_t(k)]);
+        for (int y = 0; y < ny; ++y) {
+          T* v = reinterpret_cast<T*>(block + size_t(y) * kColumnBlock);
+          for (int j = 0; j < n; ++j) {
+            v[2 * j] = column[2 * (size_t(j) * ny + y)];
+            v[2 * j + 1] = column[2 * (size_t(j) * ny + y) + 1];
+          }
+        }
       }
     });
     // Rows back, the frame's rows only.
@@ -206,6 +245,7 @@ class RowColumnEngine final : public FftConvolver::Engine {
   F::Complex* data_ = nullptr;  // the spectrum of the channel being convolved
   F::Plan forward_row_ = nullptr, backward_row_ = nullptr;
   F::Plan column_[2][2] = {};  // [forward, backward][whole block, last partial block]
+  mutable std::vector<F::Complex*> columns_;  // one block's columns, one after the other, per share of the blocks
 };
 
 }  // namespace

@@ -33,8 +33,9 @@ class FftConvolver {
   // combined kernel for `w` into `out` (CV_32FC3, reallocated only if its
   // size differs); light that leaves the frame is lost, none is added.
   // Negative rounding residue is set to 0. Rows and columns are
-  // transformed in fixed blocks by fixed plans (FFTW_ESTIMATE), shared out
-  // among threads, so results do not depend on the thread count or timing.
+  // transformed in fixed blocks by fixed plans (estimated, or the shipped
+  // wisdom's: fftw_planner.hpp), shared out among threads, so results do
+  // not depend on the thread count or timing.
   void convolve(const cv::Mat& rgb, const PsfWeights& w, cv::Mat& out) const {
     convolve(rgb, same_in_every_channel(w), out);
   }

@@ -1,5 +1,22 @@
-// FFTW's planner is not thread-safe (executing distinct plans is): every
-// plan is made and destroyed under this one lock.
+// FFTW's planner: its lock, and the plans it is given.
+//
+// The planner is not thread-safe (executing distinct plans is): every plan
+// is made and destroyed under fftw_planner_mutex().
+//
+// Plans are chosen without timing anything (FFTW_ESTIMATE), so that a run's
+// bytes never depend on the machine's load, except where wisdom shipped
+// with the program (glare/fftw_wisdom.txt) holds a plan for that very
+// problem: FFTW then uses the recorded plan, chosen once by measuring
+// (FFTW_MEASURE) for the transforms the presets make at 720p, 1080p and
+// 4K. The wisdom is fixed text, so the plans it gives are the same on
+// every run; it names FFTW's build and the SIMD code it chose, and FFTW
+// ignores what does not fit the machine it runs on (then: estimated
+// plans). The lock's first use imports it.
+//
+// scripts/fftw-wisdom.sh remakes the file: with EYESTREAM_FFTW_WISDOM_OUT
+// set to a path, every plan is made by measuring instead (a maintainer's
+// switch: such runs' bytes depend on the timings) and the wisdom gathered
+// is added to that file when the program ends.
 #pragma once
 
 #include <mutex>
@@ -7,5 +24,16 @@
 namespace eyestream::glare {
 
 std::mutex& fftw_planner_mutex();
+
+// The planner flags for a frame loop's transform: FFTW_ESTIMATE (wisdom
+// applies where it holds the problem), or FFTW_MEASURE while wisdom is
+// being made; with FFTW_NO_BUFFERING either way (buffered plans allocate
+// at every execution). A problem FFTW cannot plan so gets a null plan:
+// the engines then plan it by FFTW_ESTIMATE alone.
+unsigned fftw_plan_rigor();
+
+// Whether FFTW took the shipped wisdom (it refuses text made by another
+// FFTW build), for tests; false while wisdom is being made.
+bool fftw_took_shipped_wisdom();
 
 }  // namespace eyestream::glare

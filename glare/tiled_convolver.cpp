@@ -127,8 +127,9 @@ TiledConvolver::TiledConvolver(const ComponentKernels& k, int width, int height)
   std::lock_guard<std::mutex> lock(fftw_planner_mutex());
   double* real = fftw_alloc_real(size_t(e.t) * e.t);
   fftw_complex* spectrum = fftw_alloc_complex(n);
-  e.forward = fftw_plan_dft_r2c_2d(e.t, e.t, real, spectrum, FFTW_ESTIMATE);
-  e.backward = fftw_plan_dft_c2r_2d(e.t, e.t, spectrum, real, FFTW_ESTIMATE);
+  e.forward = fftw_plan_dft_r2c_2d(e.t, e.t, real, spectrum, fftw_plan_rigor());  // (powers of two: always plannable)
+  e.backward = fftw_plan_dft_c2r_2d(e.t, e.t, spectrum, real, fftw_plan_rigor());
+  CV_Assert(e.forward && e.backward);
   fftw_free(real);
   fftw_free(spectrum);
 }
