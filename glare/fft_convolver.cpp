@@ -80,14 +80,14 @@ struct FftConvolver::Engine {
 namespace {
 
 // A 2-D transform done as row transforms (r2c, only the frame's rows) and
-// column transforms (c2c, in blocks of kColumnBlock), each block of work
-// handed to whichever thread is free: every row and column is computed by
-// the same plan whatever thread runs it. The spectrum is held block-major:
-// a block's ny x kColumnBlock values are contiguous, so its column
-// transforms read neighbouring memory (in rows of the whole spectrum, the
-// same column's values would be a row's length apart: FFTW then copies
-// each column through a buffer, and the large power-of-two strides thrash
-// the cache).
+// column transforms (c2c, in blocks of kColumnBlock), rows shared out
+// among threads and blocks in fixed stripes, one per thread: every row and
+// column is computed by the same plan whatever thread runs it. The
+// spectrum is held block-major: a block's ny x kColumnBlock values are
+// contiguous, and each block is copied, a column after the other, into
+// its stripe's array for the column transforms (in rows of the whole
+// spectrum, the same column's values would be a row's length apart, and
+// the large power-of-two strides thrash the cache).
 class RowColumnEngine final : public FftConvolver::Engine {
   using F = Fftw;
   using T = double;

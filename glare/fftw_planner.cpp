@@ -45,8 +45,10 @@ std::mutex& fftw_planner_mutex() {
 
 // Plans leave out FFTW's buffered solvers: they allocate their buffers at
 // every execution (measured plans with them: 90 blocks of 180 KB a frame
-// in `balanced`, SteadyStateAllocation), and the frame loop allocates
-// nothing. Wisdom serves a request only with the flags it was made with.
+// in `balanced`, SteadyStateAllocation), and the frame loop takes no
+// image-sized block. Wisdom serves a request of equal or less rigor whose
+// buffering flag it satisfies: measured entries made without buffering
+// serve these estimated requests, not plain FFTW_ESTIMATE ones.
 unsigned fftw_plan_rigor() { return (wisdom_out() ? FFTW_MEASURE : FFTW_ESTIMATE) | FFTW_NO_BUFFERING; }
 
 bool fftw_took_shipped_wisdom() {

@@ -9,9 +9,9 @@
 // problem: FFTW then uses the recorded plan, chosen once by measuring
 // (FFTW_MEASURE) for the transforms the presets make at 720p, 1080p and
 // 4K. The wisdom is fixed text, so the plans it gives are the same on
-// every run; it names FFTW's build and the SIMD code it chose, and FFTW
-// ignores what does not fit the machine it runs on (then: estimated
-// plans). The lock's first use imports it.
+// every run. FFTW refuses the whole text where it does not fit: another
+// build of FFTW, or a CPU without AVX (its solvers differ there); then
+// every plan is estimated. The lock's first use imports it.
 //
 // scripts/fftw-wisdom.sh remakes the file: with EYESTREAM_FFTW_WISDOM_OUT
 // set to a path, every plan is made by measuring instead (a maintainer's
