@@ -3,6 +3,7 @@
 #include "glare/fftw_planner.hpp"
 #include "glare/huge_pages.hpp"
 #include "glare/kernel_spectra.hpp"
+#include "glare/vector_clones.hpp"
 
 #include <fftw3.h>
 
@@ -17,31 +18,22 @@ namespace eyestream::glare {
 
 namespace {
 
-// FFTW's interface, under names the engine reads well with. A problem
-// FFTW cannot plan without buffering (some odd sizes: the plan comes back
-// null) is planned with it, by estimate.
+// FFTW's interface, under names the engine reads well with.
 struct Fftw {
   using Plan = fftw_plan;
   using Complex = fftw_complex;
   static double* real(size_t n) { return fftw_alloc_real(n); }
   static Complex* complex(size_t n) { return fftw_alloc_complex(n); }
   static void free(void* p) { fftw_free(p); }
-  template <typename Make>
-  static Plan plan(const Make& make) {
-    Plan p = make(fftw_plan_rigor());
-    if (!p) p = make(unsigned(FFTW_ESTIMATE));
-    CV_Assert(p != nullptr);
-    return p;
-  }
   static Plan r2c(int n, double* in, Complex* out) {
-    return plan([&](unsigned flags) { return fftw_plan_dft_r2c_1d(n, in, out, flags); });
+    return make_fftw_plan([&](unsigned flags) { return fftw_plan_dft_r2c_1d(n, in, out, flags); });
   }
   static Plan c2r(int n, Complex* in, double* out) {
-    return plan([&](unsigned flags) { return fftw_plan_dft_c2r_1d(n, in, out, flags); });
+    return make_fftw_plan([&](unsigned flags) { return fftw_plan_dft_c2r_1d(n, in, out, flags); });
   }
   // `howmany` contiguous transforms of n points, one after the other.
   static Plan columns(int n, int howmany, Complex* data, int sign) {
-    return plan([&](unsigned flags) {
+    return make_fftw_plan([&](unsigned flags) {
       return fftw_plan_many_dft(1, &n, howmany, data, nullptr, 1, n, data, nullptr, 1, n, sign, flags);
     });
   }
@@ -53,6 +45,55 @@ struct Fftw {
 
 
 constexpr int kColumnBlock = 16;  // columns transformed together (fixed: results do not depend on threads)
+
+// The per-value loops, compiled for AVX-512 and AVX2 beside the baseline
+// (glare/vector_clones.hpp: no FMA, so every version gives the same bytes).
+
+// row[x] = channel c of n interleaved RGB pixels.
+EYESTREAM_VECTOR_CLONES
+void channel_to_row(const float* rgb, int c, int n, double* row) {
+  for (int x = 0; x < n; ++x) row[x] = double(rgb[3 * x + c]);
+}
+
+// Channel c of n interleaved RGB pixels = max(row[x] scale, 0).
+EYESTREAM_VECTOR_CLONES
+void row_to_channel(const double* row, double scale, int c, int n, float* rgb) {
+  for (int x = 0; x < n; ++x) rgb[3 * x + c] = float(std::max(row[x] * scale, 0.0));
+}
+
+// A block's n columns (complex, row y's at block[y kColumnBlock + j]) into
+// `columns`, one after the other (column j's value y at j ny + y), or back.
+EYESTREAM_VECTOR_CLONES
+void block_to_columns(const double* block, int n, int ny, double* columns) {
+  for (int y = 0; y < ny; ++y) {  // the block read in order; each column written one value on
+    const double* v = block + 2 * size_t(y) * kColumnBlock;
+    for (int j = 0; j < n; ++j) {
+      columns[2 * (size_t(j) * ny + y)] = v[2 * j];
+      columns[2 * (size_t(j) * ny + y) + 1] = v[2 * j + 1];
+    }
+  }
+}
+
+EYESTREAM_VECTOR_CLONES
+void columns_to_block(const double* columns, int n, int ny, double* block) {
+  for (int y = 0; y < ny; ++y) {
+    double* v = block + 2 * size_t(y) * kColumnBlock;
+    for (int j = 0; j < n; ++j) {
+      v[2 * j] = columns[2 * (size_t(j) * ny + y)];
+      v[2 * j + 1] = columns[2 * (size_t(j) * ny + y) + 1];
+    }
+  }
+}
+
+// m complex values times the real w0 k0 + w1 k1 + w2 k2 + w3 k3.
+EYESTREAM_VECTOR_CLONES
+void multiply_by_combined(double* values, const double* const k[4], const double w[4], size_t m) {
+  for (size_t i = 0; i < m; ++i) {
+    const double kr = w[0] * k[0][i] + w[1] * k[1][i] + w[2] * k[2][i] + w[3] * k[3][i];
+    values[2 * i] *= kr;
+    values[2 * i + 1] *= kr;
+  }
+}
 
 }  // namespace
 
@@ -101,8 +142,9 @@ class RowColumnEngine final : public FftConvolver::Engine {
     ny = fft_size(height + reach_y);
     nc_ = nx / 2 + 1;
     stride_ = (nc_ + kColumnBlock - 1) / kColumnBlock * kColumnBlock;  // whole blocks: every block aligned alike
-    // Kernel spectra (real) block by block, each block's ny x kColumnBlock
-    // values contiguous, as the column pass reads them.
+    // Kernel spectra (real) block by block, each block's kColumnBlock
+    // columns of ny values one after the other, as the column pass holds
+    // the block's spectrum.
     for (std::vector<T>& s : spectra_) {
       s.reserve(size_t(ny) * stride_);
       prefer_huge_pages(s.data(), sizeof(T) * size_t(ny) * stride_);
@@ -113,7 +155,7 @@ class RowColumnEngine final : public FftConvolver::Engine {
                      std::vector<T>& out = spectra_[i];
                      for (int y = 0; y < ny; ++y)
                        for (int x = 0; x < nc_; ++x)
-                         out[(size_t(x / kColumnBlock) * ny + y) * kColumnBlock + x % kColumnBlock] =
+                         out[(size_t(x / kColumnBlock) * kColumnBlock + x % kColumnBlock) * ny + y] =
                              T(s[size_t(y) * nc_ + x][0]);
                    });
     std::lock_guard<std::mutex> lock(fftw_planner_mutex());
@@ -162,8 +204,7 @@ class RowColumnEngine final : public FftConvolver::Engine {
         if (y >= height_) {
           std::memset(static_cast<void*>(spectrum), 0, sizeof(F::Complex) * size_t(stride_));
         } else {
-          const cv::Vec3f* in = rgb.ptr<cv::Vec3f>(y);
-          for (int x = 0; x < width_; ++x) row[x] = T(in[x][c]);
+          channel_to_row(rgb.ptr<float>(y), c, width_, row);
           std::fill(row + width_, row + nx, T(0));
           F::r2c(forward_row_, row, spectrum);
           std::memset(static_cast<void*>(spectrum + nc_), 0, sizeof(F::Complex) * size_t(stride_ - nc_));
@@ -189,35 +230,14 @@ class RowColumnEngine final : public FftConvolver::Engine {
         const int n = std::min(kColumnBlock, nc_ - x0), partial = n < kColumnBlock;
         F::Complex* block = at(b, 0);
         T* column = reinterpret_cast<T*>(columns_[size_t(k)]);  // column j's value y at 2 (j ny + y)
-        for (int y = 0; y < ny; ++y) {
-          const T* v = reinterpret_cast<const T*>(block + size_t(y) * kColumnBlock);
-          for (int j = 0; j < n; ++j) {
-            column[2 * (size_t(j) * ny + y)] = v[2 * j];
-            column[2 * (size_t(j) * ny + y) + 1] = v[2 * j + 1];
-          }
-        }
+        block_to_columns(reinterpret_cast<const T*>(block), n, ny, column);
         F::c2c(column_[0][partial], columns_[size_t(k)]);
         const size_t start = size_t(b) * ny * kColumnBlock;
-        const T* k0 = spectra_[0].data() + start;
-        const T* k1 = spectra_[1].data() + start;
-        const T* k2 = spectra_[2].data() + start;
-        const T* k3 = spectra_[3 + c].data() + start;
-        for (int y = 0; y < ny; ++y) {
-          const size_t o = size_t(y) * kColumnBlock;
-          for (int j = 0; j < n; ++j) {
-            const T kr = weight[0] * k0[o + j] + weight[1] * k1[o + j] + weight[2] * k2[o + j] + weight[3] * k3[o + j];
-            column[2 * (size_t(j) * ny + y)] *= kr;
-            column[2 * (size_t(j) * ny + y) + 1] *= kr;
-          }
-        }
+        const T* kernel[4] = {spectra_[0].data() + start, spectra_[1].data() + start, spectra_[2].data() + start,
+                              spectra_[3 + c].data() + start};
+        multiply_by_combined(column, kernel, weight, size_t(n) * size_t(ny));
         F::c2c(column_[1][partial], columns_[size_t(k)]);
-        for (int y = 0; y < ny; ++y) {
-          T* v = reinterpret_cast<T*>(block + size_t(y) * kColumnBlock);
-          for (int j = 0; j < n; ++j) {
-            v[2 * j] = column[2 * (size_t(j) * ny + y)];
-            v[2 * j + 1] = column[2 * (size_t(j) * ny + y) + 1];
-          }
-        }
+        columns_to_block(column, n, ny, reinterpret_cast<T*>(block));
       }
     });
     // Rows back, the frame's rows only.
@@ -229,8 +249,7 @@ class RowColumnEngine final : public FftConvolver::Engine {
         for (int b = 0; b < stride_ / kColumnBlock; ++b)
           std::memcpy(static_cast<void*>(spectrum + b * kColumnBlock), at(b, y), sizeof(F::Complex) * kColumnBlock);
         F::c2r(backward_row_, spectrum, row);
-        cv::Vec3f* o = out.ptr<cv::Vec3f>(y);
-        for (int x = 0; x < width_; ++x) o[x][c] = float(std::max(row[x] * scale, T(0)));
+        row_to_channel(row, scale, c, width_, out.ptr<float>(y));
       }
       F::free(row);
       F::free(spectrum);

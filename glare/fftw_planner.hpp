@@ -19,7 +19,10 @@
 // is added to that file when the program ends.
 #pragma once
 
+#include <fftw3.h>
+
 #include <mutex>
+#include <stdexcept>
 
 namespace eyestream::glare {
 
@@ -29,8 +32,21 @@ std::mutex& fftw_planner_mutex();
 // applies where it holds the problem), or FFTW_MEASURE while wisdom is
 // being made; with FFTW_NO_BUFFERING either way (buffered plans allocate
 // at every execution). A problem FFTW cannot plan so gets a null plan:
-// the engines then plan it by FFTW_ESTIMATE alone.
+// make_fftw_plan then plans it by FFTW_ESTIMATE alone.
 unsigned fftw_plan_rigor();
+
+// A plan made by make(flags) (a call of one of FFTW's planners) with
+// fftw_plan_rigor(), or, where FFTW cannot plan the problem without
+// buffering (some small sizes with odd factors: the plan is null), with
+// FFTW_ESTIMATE alone (buffered, estimated). Never null. Under
+// fftw_planner_mutex(), as every plan.
+template <typename Make>
+auto make_fftw_plan(const Make& make) {
+  auto plan = make(fftw_plan_rigor());
+  if (!plan) plan = make(unsigned(FFTW_ESTIMATE));
+  if (!plan) throw std::runtime_error("FFTW could not plan a transform");
+  return plan;
+}
 
 // Whether FFTW took the shipped wisdom (it refuses text made by another
 // FFTW build), for tests; false while wisdom is being made.

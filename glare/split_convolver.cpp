@@ -4,6 +4,8 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
+#include "glare/vector_clones.hpp"
+
 namespace eyestream::glare {
 
 namespace {
@@ -69,19 +71,6 @@ void apply_band(cv::Mat& kernel, double pixel_scale, double inner, double outer)
   }
 }
 
-// `m` (energies per block of a level) enlarged by `by` to `size`, as
-// energies per pixel of that size: bilinear, then each channel scaled so
-// its total is kept.
-cv::Mat enlarge_keeping_energy(const cv::Mat& m, int by, cv::Size size) {
-  cv::Mat up;
-  cv::resize(m * (1.0 / (double(by) * by)), up, size, 0, 0, cv::INTER_LINEAR);
-  const cv::Scalar want = cv::sum(m), got = cv::sum(up);
-  cv::Scalar scale;
-  for (int c = 0; c < 3; ++c) scale[c] = got[c] > 0 ? want[c] / got[c] : 0.0;
-  cv::multiply(up, scale, up);
-  return up;
-}
-
 // Sums of `m`'s by x by blocks (zero beyond its edges) into a `size` image.
 cv::Mat block_sums(const cv::Mat& m, int by, cv::Size size) {
   cv::Mat sums(size, CV_32FC3);
@@ -111,11 +100,136 @@ struct Source {
   cv::Vec3f value;
 };
 
+// The flat loops of the enlargements, compiled for AVX-512 and AVX2
+// beside the baseline (glare/vector_clones.hpp: no FMA, so every version
+// gives the same bytes).
+
+// wide[3x + c] = m[3 a + c] (1 - wb) + m[3 b + c] wb for each output pixel x's taps.
+EYESTREAM_VECTOR_CLONES
+void widen_row(const float* m, const LinearTap* taps, int width, float* wide) {
+  for (int x = 0; x < width; ++x) {
+    const float* pa = m + 3 * taps[x].a;
+    const float* pb = m + 3 * taps[x].b;
+    const float wa = 1.0f - taps[x].wb, wb = taps[x].wb;
+    for (int c = 0; c < 3; ++c) wide[3 * x + c] = pa[c] * wa + pb[c] * wb;
+  }
+}
+
+// Eight pixels' channel pattern of a per-channel factor.
+struct ChannelPattern {
+  float v[24];
+  explicit ChannelPattern(const float s[3]) {
+    for (int i = 0; i < 24; ++i) v[i] = s[i % 3];
+  }
+};
+
+// out[i] = max(out[i] + (top[i] (1 - wb) + bottom[i] wb) scale[i % 3], 0)
+// over n = 3 pixels values, or out[i] += ... without the max.
+template <bool kFloor>
+void blend_into_impl(const float* top, const float* bottom, float wb, const ChannelPattern& scale, int n, float* out) {
+  const float wa = 1.0f - wb;
+  int i0 = 0;
+  for (; i0 + 24 <= n; i0 += 24)
+    for (int k = 0; k < 24; ++k) {
+      const float v = out[i0 + k] + (top[i0 + k] * wa + bottom[i0 + k] * wb) * scale.v[k];
+      out[i0 + k] = kFloor ? std::max(v, 0.0f) : v;
+    }
+  for (int k = 0; i0 + k < n; ++k) {
+    const float v = out[i0 + k] + (top[i0 + k] * wa + bottom[i0 + k] * wb) * scale.v[k];
+    out[i0 + k] = kFloor ? std::max(v, 0.0f) : v;
+  }
+}
+
+EYESTREAM_VECTOR_CLONES
+void blend_into_floored(const float* top, const float* bottom, float wb, const ChannelPattern& scale, int n,
+                        float* out) {
+  blend_into_impl<true>(top, bottom, wb, scale, n, out);
+}
+
+EYESTREAM_VECTOR_CLONES
+void blend_into(const float* top, const float* bottom, float wb, const ChannelPattern& scale, int n, float* out) {
+  blend_into_impl<false>(top, bottom, wb, scale, n, out);
+}
+
+// out += `m` enlarged by `up` times `scale` per channel (floored at 0 when
+// kFloor), in stripes of rows that widen each input row once.
+template <bool kFloor>
+void add_enlarged(const cv::Mat& m, const std::vector<LinearTap>& up_x, const std::vector<LinearTap>& up_y,
+                  const float scale[3], cv::Mat& out) {
+  CV_Assert(m.type() == CV_32FC3 && out.type() == CV_32FC3 && int(up_x.size()) >= out.cols &&
+            int(up_y.size()) >= out.rows);
+  const ChannelPattern pattern(scale);
+  const int width = out.cols;
+  cv::parallel_for_(
+      cv::Range(0, out.rows),
+      [&](const cv::Range& rows) {
+        cv::Mat widened(2, width, CV_32FC3);  // two input rows across the output, in slots row % 2
+        int held[2] = {-1, -1};
+        const auto row_of = [&](int v) {
+          float* wide = widened.ptr<float>(v % 2);
+          if (held[v % 2] != v) {
+            widen_row(m.ptr<float>(v), up_x.data(), width, wide);
+            held[v % 2] = v;
+          }
+          return wide;
+        };
+        for (int y = rows.start; y < rows.end; ++y) {
+          const LinearTap& ty = up_y[size_t(y)];
+          const float* top = row_of(ty.a);
+          const float* bottom = ty.b == ty.a ? top : row_of(ty.b);
+          if (kFloor)
+            blend_into_floored(top, bottom, ty.wb, pattern, 3 * width, out.ptr<float>(y));
+          else
+            blend_into(top, bottom, ty.wb, pattern, 3 * width, out.ptr<float>(y));
+        }
+      },
+      double(std::max(1, cv::getNumThreads()) * 4));
+}
+
+// Per channel, want / got (0 where nothing was got).
+struct EnergyScale {
+  float v[3];
+  operator const float*() const { return v; }
+};
+EnergyScale energy_scale(const cv::Scalar& want, const cv::Vec3d& got) {
+  EnergyScale s;
+  for (int c = 0; c < 3; ++c) s.v[c] = got[c] > 0 ? float(want[c] / got[c]) : 0.0f;
+  return s;
+}
+
+// A width x height frame padded to whole blocks of `block` pixels.
+cv::Size padded(int width, int height, int block) {
+  return {(width + block - 1) / block * block, (height + block - 1) / block * block};
+}
+
 }  // namespace
+
+SplitConvolver::Enlargement::Enlargement(cv::Size from, cv::Size to)
+    : x(linear_taps(0, to.width, double(from.width) / to.width, from.width)),
+      y(linear_taps(0, to.height, double(from.height) / to.height, from.height)),
+      column_weight(size_t(from.width), 0.0),
+      row_weight(size_t(from.height), 0.0) {
+  for (const LinearTap& t : x) column_weight[size_t(t.a)] += 1.0 - t.wb, column_weight[size_t(t.b)] += t.wb;
+  for (const LinearTap& t : y) row_weight[size_t(t.a)] += 1.0 - t.wb, row_weight[size_t(t.b)] += t.wb;
+}
+
+cv::Vec3d SplitConvolver::Enlargement::total(const cv::Mat& m) const {
+  CV_Assert(m.type() == CV_32FC3 && m.cols == int(column_weight.size()) && m.rows == int(row_weight.size()));
+  cv::Vec3d got;
+  for (int v = 0; v < m.rows; ++v) {
+    const cv::Vec3f* p = m.ptr<cv::Vec3f>(v);
+    cv::Vec3d row;
+    for (int u = 0; u < m.cols; ++u) row += cv::Vec3d(p[u]) * column_weight[size_t(u)];
+    got += row * row_weight[size_t(v)];
+  }
+  return got;
+}
 
 SplitConvolver::SplitConvolver(int width, int height, double ppd, int factor, const EyeOptics& optics,
                                bool with_centre)
-    : width_(width), height_(height), factor_(std::max(factor, 2)), radius_(8 * factor_) {
+    : width_(width), height_(height), factor_(std::max(factor, 2)), radius_(8 * factor_),
+      tail_up_(padded(width, height, 4 * factor_) / (4 * factor_), padded(width, height, 4 * factor_) / factor_),
+      middle_up_(padded(width, height, 4 * factor_) / factor_, padded(width, height, 4 * factor_)) {
   const int f1 = factor_, f2 = 4 * factor_;
   const int padded_w = (width + f2 - 1) / f2 * f2, padded_h = (height + f2 - 1) / f2 * f2;
   // Window radii in full-resolution pixels. The tail starts beyond the
@@ -154,14 +268,6 @@ SplitConvolver::SplitConvolver(int width, int height, double ppd, int factor, co
   coarse_[1].factor = f2;
   coarse_[1].size = {padded_w / f2, padded_h / f2};
   coarse_[1].engine = std::make_unique<FftConvolver>(tail);
-  // Enlarging the middle level to the padded frame: each frame pixel's taps,
-  // and the weight each block gets over the whole padded frame.
-  up_x_ = linear_taps(0, padded_w, 1.0 / f1, padded_w / f1);
-  up_y_ = linear_taps(0, padded_h, 1.0 / f1, padded_h / f1);
-  up_column_weight_.assign(size_t(padded_w / f1), 0.0);
-  up_row_weight_.assign(size_t(padded_h / f1), 0.0);
-  for (const LinearTap& t : up_x_) up_column_weight_[size_t(t.a)] += 1.0 - t.wb, up_column_weight_[size_t(t.b)] += t.wb;
-  for (const LinearTap& t : up_y_) up_row_weight_[size_t(t.a)] += 1.0 - t.wb, up_row_weight_[size_t(t.b)] += t.wb;
 }
 
 SplitConvolver::~SplitConvolver() = default;
@@ -224,52 +330,15 @@ void SplitConvolver::add_coarse(const cv::Mat& rgb, const ChannelWeights& w, cv:
   const int step = tail.factor / middle.factor;
   const cv::Mat tail_in = block_sums(mid_in, step, tail.size);
   // The energy landing on each block, the tail's brought to the middle's
-  // blocks, then both to the frame's pixels (bilinear, as cv::resize), each
-  // channel's total kept.
+  // blocks, then both to the frame's pixels (bilinear, as cv::resize),
+  // each channel's total kept: each enlargement is scaled by its input's
+  // total over the total the enlargement gives it.
   cv::Mat landed = middle.engine->convolve(mid_in, w);
-  landed += enlarge_keeping_energy(tail.engine->convolve(tail_in, w), step, middle.size);
-  cv::Vec3d got;  // the enlargement's totals: each block times the weight the frame's pixels give it
-  for (int v = 0; v < landed.rows; ++v) {
-    const cv::Vec3f* m = landed.ptr<cv::Vec3f>(v);
-    cv::Vec3d row;
-    for (int u = 0; u < landed.cols; ++u) row += cv::Vec3d(m[u]) * up_column_weight_[size_t(u)];
-    got += row * up_row_weight_[size_t(v)];
-  }
-  const cv::Scalar want = cv::sum(landed);
-  float scale[3];
-  for (int c = 0; c < 3; ++c) scale[c] = got[c] > 0 ? float(want[c] / got[c]) : 0.0f;
+  const cv::Mat tail_landed = tail.engine->convolve(tail_in, w);
+  add_enlarged<false>(tail_landed, tail_up_.x, tail_up_.y, energy_scale(cv::sum(tail_landed), tail_up_.total(tail_landed)),
+                      landed);
   // out = max(near + coarse, 0): rounding residue never goes negative.
-  // Each stripe widens a block row once for all the frame rows that read
-  // it (the same sums as per pixel, so the same bytes).
-  cv::parallel_for_(
-      cv::Range(0, height_),
-      [&](const cv::Range& rows) {
-        cv::Mat widened(2, width_, CV_32FC3);  // two block rows across the frame, in slots row % 2
-        int held[2] = {-1, -1};
-        const auto row_of = [&](int v) {
-          cv::Vec3f* wide = widened.ptr<cv::Vec3f>(v % 2);
-          if (held[v % 2] != v) {
-            const cv::Vec3f* m = landed.ptr<cv::Vec3f>(v);
-            for (int x = 0; x < width_; ++x) {
-              const LinearTap& tx = up_x_[size_t(x)];
-              wide[x] = m[tx.a] * (1.0f - tx.wb) + m[tx.b] * tx.wb;
-            }
-            held[v % 2] = v;
-          }
-          return wide;
-        };
-        for (int y = rows.start; y < rows.end; ++y) {
-          cv::Vec3f* o = out.ptr<cv::Vec3f>(y);
-          const LinearTap& ty = up_y_[size_t(y)];
-          const cv::Vec3f* top = row_of(ty.a);
-          const cv::Vec3f* bottom = ty.b == ty.a ? top : row_of(ty.b);
-          for (int x = 0; x < width_; ++x) {
-            const cv::Vec3f u = top[x] * (1.0f - ty.wb) + bottom[x] * ty.wb;
-            for (int c = 0; c < 3; ++c) o[x][c] = std::max(o[x][c] + u[c] * scale[c], 0.0f);
-          }
-        }
-      },
-      double(std::max(1, cv::getNumThreads()) * 4));
+  add_enlarged<true>(landed, middle_up_.x, middle_up_.y, energy_scale(cv::sum(landed), middle_up_.total(landed)), out);
 }
 
 }  // namespace eyestream::glare

@@ -69,8 +69,17 @@ class SplitConvolver {
   std::unique_ptr<FftConvolver> near_fft_;
   size_t dense_from_ = 0;  // sources beyond which the near part is dense
   std::vector<Level> coarse_;  // middle, tail
-  std::vector<LinearTap> up_x_, up_y_;  // the middle level enlarged to the padded frame
-  std::vector<double> up_column_weight_, up_row_weight_;  // each block's share of that enlargement
+  // An enlargement by bilinear taps (as cv::resize): each output column's
+  // and row's taps, and the weight each input column and row gets over the
+  // whole output (its total is the input's weighted by these).
+  struct Enlargement {
+    std::vector<LinearTap> x, y;
+    std::vector<double> column_weight, row_weight;
+    Enlargement(cv::Size from, cv::Size to);
+    cv::Vec3d total(const cv::Mat& m) const;  // of m (CV_32FC3, `from`-sized) enlarged
+  };
+  Enlargement tail_up_;    // the tail level to the middle level's size
+  Enlargement middle_up_;  // the middle level to the padded frame
 };
 
 }  // namespace eyestream::glare

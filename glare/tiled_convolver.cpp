@@ -11,6 +11,7 @@
 
 #include "glare/fftw_planner.hpp"
 #include "glare/kernel_spectra.hpp"
+#include "glare/vector_clones.hpp"
 
 namespace eyestream::glare {
 
@@ -38,8 +39,13 @@ double tile_output_share(int radius) {
 
 namespace {
 
+// The per-pixel loops are compiled for AVX-512 and AVX2 beside the
+// baseline (glare/vector_clones.hpp: no FMA, so every version gives the
+// same bytes).
+
 // One row of a window: the interleaved pixels in[0..n) into each channel's
 // array.
+EYESTREAM_VECTOR_CLONES
 void split_row(const float* in, int n, double* r0, double* r1, double* r2) {
   for (int x = 0; x < n; ++x) {
     r0[x] = double(in[3 * x]);
@@ -50,6 +56,7 @@ void split_row(const float* in, int n, double* r0, double* r1, double* r2) {
 
 // Whether any of a channel's window values is not 0: by blocks, stopping
 // at the first lit one.
+EYESTREAM_VECTOR_CLONES
 bool any_light(const double* real, size_t n) {
   constexpr size_t kBlock = 256;
   for (size_t j0 = 0; j0 < n; j0 += kBlock) {
@@ -61,6 +68,7 @@ bool any_light(const double* real, size_t n) {
 }
 
 // A spectrum times a real one, in place.
+EYESTREAM_VECTOR_CLONES
 void multiply_spectrum(double* spectrum, const double* kernel, size_t n) {
   for (size_t j = 0; j < n; ++j) {
     spectrum[2 * j] *= kernel[j];
@@ -68,7 +76,14 @@ void multiply_spectrum(double* spectrum, const double* kernel, size_t n) {
   }
 }
 
+// out = w0 k0 + w1 k1 + w2 k2 + w3 k3 over n values.
+EYESTREAM_VECTOR_CLONES
+void combine_spectra(const double* const k[4], const double w[4], size_t n, double* out) {
+  for (size_t j = 0; j < n; ++j) out[j] = w[0] * k[0][j] + w[1] * k[1][j] + w[2] * k[2][j] + w[3] * k[3][j];
+}
+
 // One output row from each channel's result, scaled, negative residue set to 0.
+EYESTREAM_VECTOR_CLONES
 void merge_row(const double* r0, const double* r1, const double* r2, double scale, int n, float* out) {
   for (int x = 0; x < n; ++x) {
     out[3 * x] = float(std::max(r0[x] * scale, 0.0));
@@ -127,9 +142,8 @@ TiledConvolver::TiledConvolver(const ComponentKernels& k, int width, int height)
   std::lock_guard<std::mutex> lock(fftw_planner_mutex());
   double* real = fftw_alloc_real(size_t(e.t) * e.t);
   fftw_complex* spectrum = fftw_alloc_complex(n);
-  e.forward = fftw_plan_dft_r2c_2d(e.t, e.t, real, spectrum, fftw_plan_rigor());  // (powers of two: always plannable)
-  e.backward = fftw_plan_dft_c2r_2d(e.t, e.t, spectrum, real, fftw_plan_rigor());
-  CV_Assert(e.forward && e.backward);
+  e.forward = make_fftw_plan([&](unsigned flags) { return fftw_plan_dft_r2c_2d(e.t, e.t, real, spectrum, flags); });
+  e.backward = make_fftw_plan([&](unsigned flags) { return fftw_plan_dft_c2r_2d(e.t, e.t, spectrum, real, flags); });
   fftw_free(real);
   fftw_free(spectrum);
 }
@@ -151,11 +165,9 @@ void TiledConvolver::convolve(const cv::Mat& rgb, const ChannelWeights& w, cv::M
   // Each channel's combined kernel spectrum for this frame's weights.
   std::vector<double>& kernel = e.combined;
   for (int c = 0; c < 3; ++c) {
-    const double w0 = w[size_t(c)].core, w1 = w[size_t(c)].inner, w2 = w[size_t(c)].outer, w3 = w[size_t(c)].halo;
-    const double *k0 = e.spectra[0].data(), *k1 = e.spectra[1].data(), *k2 = e.spectra[2].data(),
-                 *k3 = e.spectra[3 + c].data();
-    double* kc = kernel.data() + size_t(c) * n;
-    for (size_t j = 0; j < n; ++j) kc[j] = w0 * k0[j] + w1 * k1[j] + w2 * k2[j] + w3 * k3[j];
+    const double weights[4] = {w[size_t(c)].core, w[size_t(c)].inner, w[size_t(c)].outer, w[size_t(c)].halo};
+    const double* spectra[4] = {e.spectra[0].data(), e.spectra[1].data(), e.spectra[2].data(), e.spectra[3 + c].data()};
+    combine_spectra(spectra, weights, n, kernel.data() + size_t(c) * n);
   }
   const int across = (e.width + b - 1) / b, down = (e.height + b - 1) / b;
   const double scale = 1.0 / (double(t) * t);

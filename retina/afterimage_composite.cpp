@@ -44,7 +44,7 @@ Rows3 rows3(const cv::Matx33f& a) {
 }
 
 // One row of n pixels (interleaved RGB; the maps' LMS beside them), in a
-// loop compiled for AVX2 beside the baseline (vector_clones.hpp).
+// loop compiled for AVX-512 and AVX2 beside the baseline (vector_clones.hpp).
 EYESTREAM_VECTOR_CLONES
 void composite_row(const float* j, const float* g, const float* b, Rows3 to_lms, Rows3 to_rgb, Rows3 h, float* o,
                    int n) {

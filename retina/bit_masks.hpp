@@ -1,7 +1,7 @@
 // Choices made with masks of bits instead of branches. A loop whose body
 // branches is not vectorised by GCC (its loads may not be made ahead of
 // the test), while a select of two values computed anyway is. Used by the
-// row loops compiled for AVX2 (vector_clones.hpp).
+// row loops compiled for AVX-512 and AVX2 (vector_clones.hpp).
 #pragma once
 
 #include <cstdint>

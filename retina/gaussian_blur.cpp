@@ -11,7 +11,7 @@ namespace eyestream::retina {
 
 namespace {
 
-// The sweeps are compiled for AVX2 beside the baseline (vector_clones.hpp).
+// The sweeps are compiled for AVX-512 and AVX2 beside the baseline (vector_clones.hpp).
 
 // out[i] = sum_t w[t] (in[i - t c] + in[i + t c]) over the row's interior
 // samples; the r pixels at each end read replicated border pixels.

@@ -30,7 +30,7 @@ class PowTable {
   }
 
   // y[i] = x[i]^p for n values in [0, 1], exactly as operator() gives
-  // them: a row at a call, compiled for AVX2 beside the baseline
+  // them: a row at a call, compiled for AVX-512 and AVX2 beside the baseline
   // (vector_clones.hpp).
   void batch(const float* x, float* y, int n) const;
 

@@ -13,6 +13,7 @@
 #include <opencv2/core/utility.hpp>
 #include <vector>
 
+#include "tests/bilinear_share_oracle.hpp"
 #include "tests/true_angle_oracle.hpp"
 
 namespace eyestream::pipeline {
@@ -71,6 +72,13 @@ TEST(FrameProjection, CarryingAFrameIntoThePlaneKeepsItsLight) {
   const double plane_pixel_sr = std::pow(M_PI / 180.0 / p.pixels_per_degree(), 2);
   const double plane_flux = cv::sum(p.to_plane_flux(frame))[0] * plane_pixel_sr;
   EXPECT_NEAR(plane_flux / frame_flux, 1.0, 0.03);
+  // The same light in colour goes through the fixed splat, each channel alike.
+  cv::Mat colour;
+  cv::merge(std::vector<cv::Mat>{frame, frame * 0.5, frame * 0.25}, colour);
+  const cv::Scalar colour_flux = cv::sum(p.to_plane_flux(colour)) * plane_pixel_sr;
+  EXPECT_NEAR(colour_flux[0] / frame_flux, 1.0, 0.03);
+  EXPECT_NEAR(colour_flux[1] / frame_flux, 0.5, 0.015);
+  EXPECT_NEAR(colour_flux[2] / frame_flux, 0.25, 0.0075);
   const cv::Mat ones(kH, kW, CV_32FC3, cv::Scalar::all(2.0));
   const cv::Mat mean = p.to_plane_mean(ones, cv::Scalar::all(-1.0));
   EXPECT_FLOAT_EQ(mean.at<cv::Vec3f>(mean.rows / 2, mean.cols / 2)[1], 2.0f);
@@ -168,16 +176,11 @@ TEST(FrameProjection, TheFluxSplatIsEachPixelsBilinearShare) {
       const cv::Vec3d r = pinhole.ray(x + 0.5, y + 0.5);
       const double theta = std::acos(r[2]), s = std::hypot(r[0], r[1]), k = s > 0.0 ? fp * theta / s : 0.0;
       const double tx = 0.5 * plane.width + k * r[0] - 0.5, ty = 0.5 * plane.height + k * r[1] - 0.5;
-      const int i0 = int(std::floor(tx)), j0 = int(std::floor(ty));
-      const double fx = tx - i0, fy = ty - j0;
-      for (int dj = 0; dj < 2; ++dj)
-        for (int di = 0; di < 2; ++di) {
-          const int i = i0 + di, j = j0 + dj;
-          if (i < 0 || j < 0 || i >= plane.width || j >= plane.height) continue;
-          const double b = (di ? fx : 1.0 - fx) * (dj ? fy : 1.0 - fy);
-          sums.at<cv::Vec3d>(j, i) += b * cv::Vec3d(frame.at<cv::Vec3f>(y, x));
-          weights.at<double>(j, i) += b;
-        }
+      const cv::Vec3d value(frame.at<cv::Vec3f>(y, x));
+      test::for_each_bilinear_share(tx, ty, plane, [&](int i, int j, double b) {
+        sums.at<cv::Vec3d>(j, i) += b * value;
+        weights.at<double>(j, i) += b;
+      });
     }
   const cv::Mat got = p.to_plane_flux(frame);
   ASSERT_EQ(got.size(), plane);

@@ -241,7 +241,9 @@ void GlareStage::add_surround(cv::Mat& light, const glare::PsfWeights& w, double
 FrameProjection::RowFinish GlareStage::surround_rows(const glare::PsfWeights& w, double surround) const {
   if (!(surround > 0.0) || in_frame_.empty()) return {};
   CV_Assert(in_frame_.size() <= 4);
-  for (const cv::Mat& m : in_frame_) CV_Assert(m.depth() == CV_32F && m.isContinuous());
+  // Each finished row is a frame row: the maps must be frame-sized.
+  for (const cv::Mat& m : in_frame_)
+    CV_Assert(m.depth() == CV_32F && m.isContinuous() && m.size() == plane_->frame_size());
   const float s = float(surround);
   const std::array<float, 4> weights = {float(w.core), float(w.inner), float(w.outer), float(w.halo)};
   // The maps hold the moved light only when the kept light is added later.

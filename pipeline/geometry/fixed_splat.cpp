@@ -9,18 +9,24 @@ namespace {
 
 constexpr int kBlockRows = 32;  // plane rows per task
 
-// The plane row above a position's bilinear footprint, and the column left
-// of it. Positions are >= 0, so truncation floors t + 1.
+// The top row of a position's bilinear footprint (the plane row whose
+// centre is at or above it). Positions are >= -0.5, so truncation floors
+// y + 0.5.
 inline int row_above(float y) { return int(y + 0.5f) - 1; }
+
+// A pixel's three channels and an unused fourth, as one vector (GCC's and
+// Clang's vector extension: SSE on x86-64, plain code elsewhere), so that
+// each of the four bilinear shares is one multiply and one add.
+typedef float Rgbx __attribute__((vector_size(16)));
 
 // A bilinear splat's two neighbouring sums in one accumulator row: the
 // left one written at once, the right one held until the next pixel.
 struct Pending {
-  cv::Vec3f* at = nullptr;
-  cv::Vec3f value;
-  cv::Vec3f take(cv::Vec3f* p) const { return p == at ? value : *p; }
-  void add(cv::Vec3f* left, const cv::Vec3f& to_left, const cv::Vec3f& to_right) {
-    const cv::Vec3f l = take(left), r = take(left + 1);
+  Rgbx* at = nullptr;
+  Rgbx value = {0, 0, 0, 0};
+  Rgbx take(Rgbx* p) const { return p == at ? value : *p; }
+  void add(Rgbx* left, const Rgbx& to_left, const Rgbx& to_right) {
+    const Rgbx l = take(left), r = take(left + 1);
     if (at && at != left && at != left + 1) *at = value;
     *left = l + to_left;
     at = left + 1;
@@ -37,12 +43,16 @@ struct Pending {
 FixedSplat::FixedSplat(const cv::Mat& positions, cv::Size plane) : positions_(positions), plane_(plane) {
   CV_Assert(positions.type() == CV_32FC2 && !plane.empty());
   const int blocks = (plane.height + kBlockRows - 1) / kBlockRows;
-  // The plane rows each frame row reaches at most.
+  // The plane rows each frame row reaches at most; every position where
+  // the accumulators' border column and row each way hold its footprint
+  // (a footprint below the plane falls in no block).
   std::vector<int> top(size_t(positions.rows)), bottom(size_t(positions.rows));
   for (int y = 0; y < positions.rows; ++y) {
     float low = 1e30f, high = -1e30f;
     const cv::Vec2f* pos = positions.ptr<cv::Vec2f>(y);
     for (int x = 0; x < positions.cols; ++x) {
+      CV_Assert(pos[x][0] >= -0.5f && pos[x][0] < float(plane.width) + 0.5f && pos[x][1] >= -0.5f &&
+                pos[x][1] < 1e8f);
       low = std::min(low, pos[x][1]);
       high = std::max(high, pos[x][1]);
     }
@@ -95,13 +105,13 @@ void FixedSplat::apply(const cv::Mat& frame, const cv::Mat& factor, cv::Mat& out
   // accumulator has a border row and column each way (no bounds checks).
   const int shares = std::min(blocks, std::max(1, cv::getNumThreads()));
   std::vector<cv::Mat> accumulators(static_cast<size_t>(shares));
-  for (cv::Mat& m : accumulators) m.create(kBlockRows + 2, stride, CV_32FC3);
+  for (cv::Mat& m : accumulators) m.create(kBlockRows + 2, stride, CV_32FC4);  // Rgbx, 16-byte aligned
   cv::parallel_for_(cv::Range(0, shares), [&](const cv::Range& r) {
     for (int k = r.start; k < r.end; ++k)
       for (int b = k; b < blocks; b += shares) {
-        cv::Vec3f* sums = accumulators[size_t(k)].ptr<cv::Vec3f>();
+        Rgbx* sums = reinterpret_cast<Rgbx*>(accumulators[size_t(k)].ptr<float>());
         const int r0 = b * kBlockRows, rows = std::min(kBlockRows, plane_.height - r0);
-        std::fill(sums, sums + size_t(rows + 2) * size_t(stride), cv::Vec3f(0, 0, 0));  // rows r0 - 1 .. r0 + rows
+        std::fill(sums, sums + size_t(rows + 2) * size_t(stride), Rgbx{0, 0, 0, 0});  // rows r0 - 1 .. r0 + rows
         for (size_t i = first_run_[size_t(b)]; i < first_run_[size_t(b) + 1]; ++i) {
           const Run& run = runs_[i];
           const cv::Vec3f* in = frame.ptr<cv::Vec3f>(run.y);
@@ -120,8 +130,9 @@ void FixedSplat::apply(const cv::Mat& frame, const cv::Mat& factor, cv::Mat& out
               held_row = j0;
             }
             const float fx = tx - float(i0 + 1), fy = ty - float(j0 + 1);
-            cv::Vec3f* s = &sums[size_t(j0 - r0 + 1) * size_t(stride) + size_t(i0 + 1)];
-            const cv::Vec3f top_row = in[x] * (1.0f - fy), bottom_row = in[x] * fy;
+            Rgbx* s = &sums[size_t(j0 - r0 + 1) * size_t(stride) + size_t(i0 + 1)];
+            const Rgbx value = {in[x][0], in[x][1], in[x][2], 0.0f};
+            const Rgbx top_row = value * (1.0f - fy), bottom_row = value * fy;
             top.add(s, top_row * (1.0f - fx), top_row * fx);
             bottom.add(s + stride, bottom_row * (1.0f - fx), bottom_row * fx);
           }
@@ -131,8 +142,11 @@ void FixedSplat::apply(const cv::Mat& frame, const cv::Mat& factor, cv::Mat& out
         for (int j = 0; j < rows; ++j) {
           cv::Vec3f* o = out.ptr<cv::Vec3f>(r0 + j);
           const float* f = factor.ptr<float>(r0 + j);
-          const cv::Vec3f* s = &sums[size_t(j + 1) * size_t(stride) + 1];
-          for (int i = 0; i < cols; ++i) o[i] = s[i] * f[i];
+          const Rgbx* s = &sums[size_t(j + 1) * size_t(stride) + 1];
+          for (int i = 0; i < cols; ++i) {
+            const Rgbx v = s[i] * f[i];
+            o[i] = cv::Vec3f(v[0], v[1], v[2]);
+          }
         }
       }
   });

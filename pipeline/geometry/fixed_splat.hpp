@@ -7,9 +7,10 @@
 // columns) whatever the thread count. A frame row reaches a block along
 // one or two runs of its pixels (a rectilinear frame's rows curve on the
 // plane); the runs are found once, when the positions are fixed, so a
-// block reads only the pixels that land on it: scanning every row a block
-// might reach cost 19 ms a 1080p frame, most of it pixels that land
-// elsewhere (docs/performance.md).
+// block reads only the pixels that land on it, not every pixel of every
+// row that might reach it (docs/performance.md). A pixel's three channels
+// are held as one four-float vector: each bilinear share is one multiply
+// and one add.
 #pragma once
 
 #include <opencv2/core.hpp>
@@ -19,8 +20,11 @@ namespace eyestream::pipeline {
 
 class FixedSplat {
  public:
-  // Frame pixel centres at plane positions `positions` (CV_32FC2, >= 0,
-  // plane pixel centres at integer + 0.5) onto a `plane`-sized image.
+  // Frame pixel centres at plane positions `positions` (CV_32FC2, plane
+  // pixel centres at integer + 0.5; x in [-0.5, plane width + 0.5), y >=
+  // -0.5: a footprint reaching beyond the plane's last row is cut there)
+  // onto a `plane`-sized image. The positions are shared, not copied: they
+  // must not change while the splat is used.
   FixedSplat(const cv::Mat& positions, cv::Size plane);
 
   // out (CV_32FC3, plane-sized) = the splat of `frame` (CV_32FC3) times

@@ -95,12 +95,13 @@ class FrameProjection {
   // that a shift-invariant convolution on the plane spreads each frame
   // pixel's flux: mean times sin(theta) / theta, 0 beyond the frame.
   cv::Mat to_plane_flux(const cv::Mat& frame) const;
-  // A plane image (plane-sized) sampled bilinearly at every frame pixel's
-  // direction.
+  // A plane image (plane-sized, CV_32FC3) sampled bilinearly at every
+  // frame pixel's direction (the plane itself for the identity).
   cv::Mat to_frame_image(const cv::Mat& plane) const;
-  // The same into `out`, handing each frame row to `finish` (row y, its
-  // pixels) while it is still in the cache: later per-pixel work in the
-  // same sweep. Rows go to `finish` in stripes on any thread.
+  // The same into `out` (not for the identity), handing each frame row to
+  // `finish` (row y, its pixels) while it is still in the cache: later
+  // per-pixel work in the same sweep. Rows go to `finish` in stripes on
+  // any thread.
   using RowFinish = std::function<void(int y, float* row)>;
   void to_frame_image(const cv::Mat& plane, cv::Mat& out, const RowFinish& finish) const;
   // The plane position of every frame pixel's centre (CV_32FC2).

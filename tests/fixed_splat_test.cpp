@@ -1,0 +1,126 @@
+// pipeline/geometry/fixed_splat.hpp on made-up positions, against a
+// bilinear splat summed here in double, pixel by pixel: pixels that step
+// back, jump several columns or rows either way, sit exactly on pixel
+// centres and edges or on the plane's border, over planes shorter than a
+// block of rows and not a whole number of blocks; the sums (factor 1) and
+// the factor's product, and the same bytes whatever the thread count.
+#include "pipeline/geometry/fixed_splat.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <opencv2/core/utility.hpp>
+
+#include "tests/bilinear_share_oracle.hpp"
+
+namespace eyestream::pipeline {
+namespace {
+
+// The splat summed in double: each position's bilinear shares of the four
+// plane pixels around it (pixel centres at integer + 0.5), those beyond
+// the plane dropped, times `factor`.
+cv::Mat naive_splat(const cv::Mat& frame, const cv::Mat& positions, cv::Size plane, const cv::Mat& factor) {
+  cv::Mat sums(plane, CV_64FC3, cv::Scalar::all(0.0));
+  for (int y = 0; y < frame.rows; ++y)
+    for (int x = 0; x < frame.cols; ++x) {
+      const cv::Vec2f p = positions.at<cv::Vec2f>(y, x);
+      const cv::Vec3d value(frame.at<cv::Vec3f>(y, x));
+      test::for_each_bilinear_share(p[0] - 0.5, p[1] - 0.5, plane,
+                                    [&](int i, int j, double share) { sums.at<cv::Vec3d>(j, i) += share * value; });
+    }
+  for (int v = 0; v < plane.height; ++v)
+    for (int u = 0; u < plane.width; ++u) sums.at<cv::Vec3d>(v, u) *= double(factor.at<float>(v, u));
+  return sums;
+}
+
+// Positions that wander: mostly a step of 0.4-1.1 columns a pixel along a
+// slowly curving row, with steps back, jumps of several columns and rows
+// up and down, exact centres (integer + 0.5) and edges (integers), and the
+// plane's borders (-0.5, width + 0.5 - a little, 0 rows).
+cv::Mat wandering_positions(cv::Size frame, cv::Size plane, unsigned seed) {
+  cv::RNG rng(seed);
+  cv::Mat positions(frame, CV_32FC2);
+  const float top_x = float(plane.width) + 0.5f - 1e-3f;
+  for (int y = 0; y < frame.height; ++y) {
+    float px = float(rng.uniform(-0.5, 2.0));
+    for (int x = 0; x < frame.width; ++x) {
+      const float row = float(y) * float(plane.height) / float(frame.height) + 2.0f * std::sin(0.05f * float(x));
+      float py = row;
+      switch (rng.uniform(0, 12)) {
+        case 0: px -= float(rng.uniform(0.2, 2.5)); break;           // a step back
+        case 1: px += float(rng.uniform(2.0, 6.0)); break;           // a jump on
+        case 2: py = row + float(rng.uniform(-5.0, 5.0)); break;     // rows away
+        case 3: px = std::floor(px) + 0.5f; break;                   // a pixel centre
+        case 4: px = std::floor(px); py = std::floor(row); break;    // a pixel edge both ways
+        case 5: px = -0.5f; break;                                   // the left border
+        case 6: px = top_x; break;                                   // the right border
+        case 7: py = -0.5f; break;                                   // the top border
+        default: px += float(rng.uniform(0.4, 1.1));
+      }
+      px = std::min(std::max(px, -0.5f), top_x);
+      py = std::max(py, -0.5f);
+      positions.at<cv::Vec2f>(y, x) = cv::Vec2f(px, py);
+    }
+  }
+  return positions;
+}
+
+void expect_matches_naive(cv::Size frame_size, cv::Size plane, unsigned seed) {
+  const cv::Mat positions = wandering_positions(frame_size, plane, seed);
+  cv::Mat frame(frame_size, CV_32FC3), factor(plane, CV_32F);
+  cv::RNG rng(seed + 1);
+  rng.fill(frame, cv::RNG::UNIFORM, 0.0, 100.0);
+  rng.fill(factor, cv::RNG::UNIFORM, 0.5, 2.0);
+  const FixedSplat splat(positions, plane);
+  const cv::Mat ones(plane, CV_32F, cv::Scalar(1.0));
+  for (const cv::Mat* f : {&ones, static_cast<const cv::Mat*>(&factor)}) {
+    cv::Mat got;
+    splat.apply(frame, *f, got);
+    ASSERT_EQ(got.size(), plane);
+    ASSERT_EQ(got.type(), CV_32FC3);
+    const cv::Mat want = naive_splat(frame, positions, plane, *f);
+    for (int v = 0; v < plane.height; ++v)
+      for (int u = 0; u < plane.width; ++u)
+        for (int c = 0; c < 3; ++c) {
+          const double w = want.at<cv::Vec3d>(v, u)[c];
+          ASSERT_NEAR(got.at<cv::Vec3f>(v, u)[c], w, 1e-5 * std::max(w, 1.0) + 1e-4)
+              << "plane " << plane << " pixel " << u << "," << v << " channel " << c;
+        }
+  }
+}
+
+TEST(FixedSplat, WanderingPositionsGetEachPixelsBilinearShares) {
+  expect_matches_naive({97, 61}, {80, 45}, 1);     // a block and a half of rows
+  expect_matches_naive({64, 20}, {50, 17}, 2);     // shorter than a block
+  expect_matches_naive({130, 140}, {121, 96}, 3);  // three whole blocks
+}
+
+TEST(FixedSplat, TheSameBytesWhateverTheThreadCount) {
+  const cv::Size frame_size(200, 150), plane(160, 111);
+  const cv::Mat positions = wandering_positions(frame_size, plane, 7);
+  cv::Mat frame(frame_size, CV_32FC3);
+  cv::RNG(8).fill(frame, cv::RNG::UNIFORM, 0.0, 1000.0);
+  const cv::Mat factor(plane, CV_32F, cv::Scalar(1.0));
+  const FixedSplat splat(positions, plane);
+  const int threads = cv::getNumThreads();
+  cv::Mat one, many;
+  cv::setNumThreads(1);
+  splat.apply(frame, factor, one);
+  cv::setNumThreads(2);
+  splat.apply(frame, factor, many);
+  cv::setNumThreads(threads);
+  EXPECT_EQ(cv::norm(one, many, cv::NORM_INF), 0.0);
+}
+
+TEST(FixedSplat, RefusesPositionsBeyondItsBorders) {
+  const cv::Size plane(40, 30);
+  for (const cv::Vec2f bad : {cv::Vec2f(-0.6f, 3.0f), cv::Vec2f(40.5f, 3.0f), cv::Vec2f(3.0f, -0.6f),
+                              cv::Vec2f(NAN, 3.0f), cv::Vec2f(3.0f, NAN)}) {
+    cv::Mat positions(5, 5, CV_32FC2, cv::Scalar(10.0, 10.0));
+    positions.at<cv::Vec2f>(2, 3) = bad;
+    EXPECT_THROW(FixedSplat(positions, plane), cv::Exception) << bad;
+  }
+}
+
+}  // namespace
+}  // namespace eyestream::pipeline
