@@ -260,7 +260,7 @@ class RowColumnEngine final : public FftConvolver::Engine {
   F::Complex* at(int b, int y) const { return data_ + (size_t(b) * size_t(ny) + size_t(y)) * kColumnBlock; }
 
   int width_, height_, nc_ = 0, stride_ = 0;
-  std::vector<T> spectra_[6];  // core, inner, outer, halo R, G, B; real, block-major
+  std::vector<T> spectra_[6];  // core, inner, outer, halo R, G, B; real, block-major, column after column in a block
   F::Complex* data_ = nullptr;  // the spectrum of the channel being convolved
   F::Plan forward_row_ = nullptr, backward_row_ = nullptr;
   F::Plan column_[2][2] = {};  // [forward, backward][whole block, last partial block]

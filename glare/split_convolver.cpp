@@ -124,7 +124,7 @@ struct ChannelPattern {
 };
 
 // out[i] = max(out[i] + (top[i] (1 - wb) + bottom[i] wb) scale[i % 3], 0)
-// over n = 3 pixels values, or out[i] += ... without the max.
+// over n = 3 x pixels values, or out[i] += ... without the max.
 template <bool kFloor>
 void blend_into_impl(const float* top, const float* bottom, float wb, const ChannelPattern& scale, int n, float* out) {
   const float wa = 1.0f - wb;

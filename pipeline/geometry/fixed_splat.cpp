@@ -15,7 +15,7 @@ constexpr int kBlockRows = 32;  // plane rows per task
 inline int row_above(float y) { return int(y + 0.5f) - 1; }
 
 // A pixel's three channels and an unused fourth, as one vector (GCC's and
-// Clang's vector extension: SSE on x86-64, plain code elsewhere), so that
+// Clang's vector extension: SSE on x86-64, NEON on AArch64), so that
 // each of the four bilinear shares is one multiply and one add.
 typedef float Rgbx __attribute__((vector_size(16)));
 

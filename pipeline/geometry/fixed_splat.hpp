@@ -21,8 +21,8 @@ namespace eyestream::pipeline {
 class FixedSplat {
  public:
   // Frame pixel centres at plane positions `positions` (CV_32FC2, plane
-  // pixel centres at integer + 0.5; x in [-0.5, plane width + 0.5), y >=
-  // -0.5: a footprint reaching beyond the plane's last row is cut there)
+  // pixel centres at integer + 0.5; x in [-0.5, plane width + 0.5), y in
+  // [-0.5, 1e8): a footprint reaching beyond the plane's last row is cut there)
   // onto a `plane`-sized image. The positions are shared, not copied: they
   // must not change while the splat is used.
   FixedSplat(const cv::Mat& positions, cv::Size plane);

@@ -371,9 +371,10 @@ cv::Mat FrameProjection::to_frame_image(const cv::Mat& plane) const {
 void FrameProjection::to_frame_image(const cv::Mat& plane, cv::Mat& out, const RowFinish& finish) const {
   CV_Assert(!identity() && plane.size() == plane_ && plane.type() == CV_32FC3);
   out.create(frame_, CV_32FC3);
-  // Each stripe of rows through cv::remap, then to `finish` while in the
-  // cache. The stripes are fixed (8 rows, whatever the threads), so
-  // cv::remap's own blocking within a stripe is the same on every run.
+  // Each stripe of rows through cv::remap (every pixel computed on its
+  // own from the plane, so any split gives the same values; the stripes
+  // are fixed, 8 rows whatever the threads), then to `finish` while in
+  // the cache.
   constexpr int kStripeRows = 8;
   const int stripes = (frame_.height + kStripeRows - 1) / kStripeRows;
   cv::parallel_for_(cv::Range(0, stripes), [&](const cv::Range& r) {
