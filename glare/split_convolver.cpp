@@ -191,7 +191,7 @@ struct EnergyScale {
   float v[3];
   operator const float*() const { return v; }
 };
-EnergyScale energy_scale(const cv::Scalar& want, const cv::Vec3d& got) {
+EnergyScale energy_scale(const cv::Vec3d& want, const cv::Vec3d& got) {
   EnergyScale s;
   for (int c = 0; c < 3; ++c) s.v[c] = got[c] > 0 ? float(want[c] / got[c]) : 0.0f;
   return s;
@@ -213,16 +213,23 @@ SplitConvolver::Enlargement::Enlargement(cv::Size from, cv::Size to)
   for (const LinearTap& t : y) row_weight[size_t(t.a)] += 1.0 - t.wb, row_weight[size_t(t.b)] += t.wb;
 }
 
-cv::Vec3d SplitConvolver::Enlargement::total(const cv::Mat& m) const {
+SplitConvolver::Enlargement::Totals SplitConvolver::Enlargement::totals(const cv::Mat& m) const {
   CV_Assert(m.type() == CV_32FC3 && m.cols == int(column_weight.size()) && m.rows == int(row_weight.size()));
-  cv::Vec3d got;
+  // Both totals in one pass: the input's in double in pixel order (as
+  // cv::sum adds a three-channel float image, to the same bytes), the
+  // enlargement's through the rows' and columns' weights.
+  Totals t;
   for (int v = 0; v < m.rows; ++v) {
     const cv::Vec3f* p = m.ptr<cv::Vec3f>(v);
-    cv::Vec3d row;
-    for (int u = 0; u < m.cols; ++u) row += cv::Vec3d(p[u]) * column_weight[size_t(u)];
-    got += row * row_weight[size_t(v)];
+    cv::Vec3d weighted;
+    for (int u = 0; u < m.cols; ++u) {
+      const cv::Vec3d x(p[u]);
+      t.input += x;
+      weighted += x * column_weight[size_t(u)];
+    }
+    t.enlarged += weighted * row_weight[size_t(v)];
   }
-  return got;
+  return t;
 }
 
 SplitConvolver::SplitConvolver(int width, int height, double ppd, int factor, const EyeOptics& optics,
@@ -335,10 +342,12 @@ void SplitConvolver::add_coarse(const cv::Mat& rgb, const ChannelWeights& w, cv:
   // total over the total the enlargement gives it.
   cv::Mat landed = middle.engine->convolve(mid_in, w);
   const cv::Mat tail_landed = tail.engine->convolve(tail_in, w);
-  add_enlarged<false>(tail_landed, tail_up_.x, tail_up_.y, energy_scale(cv::sum(tail_landed), tail_up_.total(tail_landed)),
+  const Enlargement::Totals tail_totals = tail_up_.totals(tail_landed);
+  add_enlarged<false>(tail_landed, tail_up_.x, tail_up_.y, energy_scale(tail_totals.input, tail_totals.enlarged),
                       landed);
   // out = max(near + coarse, 0): rounding residue never goes negative.
-  add_enlarged<true>(landed, middle_up_.x, middle_up_.y, energy_scale(cv::sum(landed), middle_up_.total(landed)), out);
+  const Enlargement::Totals totals = middle_up_.totals(landed);
+  add_enlarged<true>(landed, middle_up_.x, middle_up_.y, energy_scale(totals.input, totals.enlarged), out);
 }
 
 }  // namespace eyestream::glare

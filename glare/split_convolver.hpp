@@ -76,7 +76,10 @@ class SplitConvolver {
     std::vector<LinearTap> x, y;
     std::vector<double> column_weight, row_weight;
     Enlargement(cv::Size from, cv::Size to);
-    cv::Vec3d total(const cv::Mat& m) const;  // of m (CV_32FC3, `from`-sized) enlarged
+    struct Totals {
+      cv::Vec3d input, enlarged;
+    };
+    Totals totals(const cv::Mat& m) const;  // of m (CV_32FC3, `from`-sized) and of m enlarged
   };
   Enlargement tail_up_;    // the tail level to the middle level's size
   Enlargement middle_up_;  // the middle level to the padded frame

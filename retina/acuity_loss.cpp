@@ -3,12 +3,15 @@
 #include "retina/acuity_curve.hpp"
 #include "retina/bilinear_axis.hpp"
 #include "retina/gaussian_blur.hpp"
+#include "retina/bilinear_rows.hpp"
+#include "retina/enlarged_rows.hpp"
 #include "retina/vector_clones.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <opencv2/imgproc.hpp>
 
 namespace eyestream::retina {
@@ -16,6 +19,7 @@ namespace eyestream::retina {
 AcuityLoss::AcuityLoss(const AcuityParams& p, double pixels_per_degree, std::uint64_t seed, double bottom_log,
                        double top_log)
     : params_(p), seed_(seed) {
+  CV_Assert(p.bands >= 1 && p.bands <= 31);  // apply() marks a row's levels by bits of 32
   // Bands needing more than the eye's limit at 10^0.75 = 5.6 cd/m^2 (42
   // c/deg; the limit rises only to 44 c/deg at 10 cd/m^2, under one octave
   // step) share the threshold of that level.
@@ -53,7 +57,39 @@ std::uint8_t first_kept_row(const float* level, const std::vector<float>& tau, s
   return deepest;
 }
 
+// A reduced level map read at a frame's pixels a row at a time,
+// bilinearly with cv::resize INTER_LINEAR's geometry (the map's pixels
+// spread evenly over the frame): its two rows blended down, then the
+// blend across.
+class LevelRows {
+ public:
+  LevelRows(const cv::Mat& level, cv::Size frame)
+      : level_(level),
+        across_(frame.width, level.cols, float(level.cols) / float(frame.width)),
+        down_(frame.height, level.rows, float(level.rows) / float(frame.height)) {}
+  // Frame row y into `out` (frame width), through `down` (map width).
+  void row(int y, float* down, float* out) const {
+    const size_t iy = size_t(y);
+    blend_rows(level_.ptr<float>(down_.lo[iy]), level_.ptr<float>(down_.hi[iy]), down_.w[iy], down, level_.cols);
+    enlarge_row(down, across_, out, int(across_.lo.size()));
+  }
+
+ private:
+  const cv::Mat& level_;
+  BilinearAxis across_, down_;
+};
+
 }  // namespace
+
+cv::Mat enlarged_level(const cv::Mat& level, cv::Size frame) {
+  CV_Assert(level.type() == CV_32F && !level.empty());
+  if (level.size() == frame) return level.clone();
+  const LevelRows rows(level, frame);
+  cv::Mat out(frame, CV_32F);
+  std::vector<float> down(size_t(level.cols));
+  for (int y = 0; y < frame.height; ++y) rows.row(y, down.data(), out.ptr<float>(y));
+  return out;
+}
 
 double AcuityLoss::rho_all_kept() const {
   // The lowest rho whose lowest possible level, rho - g clip share(rho),
@@ -110,7 +146,14 @@ cv::Mat acuity_lowpass(const cv::Mat& src, double sigma, int f) {
 }
 
 void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
-  CV_Assert(image.type() == CV_32FC3 && level.type() == CV_32F && level.size() == image.size());
+  CV_Assert(image.type() == CV_32FC3 && level.type() == CV_32F && !level.empty());
+  // At the image's size, or reduced by a power of two (as level_factor()).
+  const auto reduced_by = [&](int f) {
+    return level.cols == (image.cols + f - 1) / f && level.rows == (image.rows + f - 1) / f;
+  };
+  int by = 1;
+  while (!reduced_by(by) && by < image.cols + image.rows) by *= 2;
+  CV_Assert(reduced_by(by));
   // Blur levels L_i of sigma_i (L_0 the image); band i = L_(i-1) - L_i is
   // kept where level > tau_i (Jacobs et al. 2015 eq. 14):
   //   out = L_n + sum_i [level > tau_i] (L_(i-1) - L_i).
@@ -126,12 +169,20 @@ void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
   // pixel takes: levels beyond it are not made.
   cv::Mat first(image.size(), CV_8U);
   std::vector<std::uint8_t> row_deepest(size_t(image.rows), 0);
-  cv::parallel_for_(cv::Range(0, image.rows), [&](const cv::Range& rows) {
-    for (int y = rows.start; y < rows.end; ++y) {
-      const float* lv = level.ptr<float>(y);
-      row_deepest[size_t(y)] = first_kept_row(lv, tau, first.ptr<std::uint8_t>(y), image.cols);
-    }
-  });
+  const bool reduced = level.size() != image.size();
+  const std::optional<LevelRows> level_rows =
+      reduced ? std::make_optional<LevelRows>(level, image.size()) : std::nullopt;
+  cv::parallel_for_(
+      cv::Range(0, image.rows),
+      [&](const cv::Range& rows) {
+        std::vector<float> down(reduced ? size_t(level.cols) : 0), full(reduced ? size_t(image.cols) : 0);
+        for (int y = rows.start; y < rows.end; ++y) {
+          const float* lv = reduced ? full.data() : level.ptr<float>(y);
+          if (reduced) level_rows->row(y, down.data(), full.data());
+          row_deepest[size_t(y)] = first_kept_row(lv, tau, first.ptr<std::uint8_t>(y), image.cols);
+        }
+      },
+      double(std::max(1, cv::getNumThreads()) * 4));  // stripes of rows, each with its two rows' buffers
   const int deepest = *std::max_element(row_deepest.begin(), row_deepest.end());
   if (deepest == 0) return;
   // The levels are made one from the last. A full-resolution level is
@@ -213,29 +264,41 @@ void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
       across[size_t(i)] = std::make_unique<BilinearAxis>(image.cols, kept[size_t(i)].cols, 1.0f / float(factor[size_t(i)]));
       down[size_t(i)] = std::make_unique<BilinearAxis>(image.rows, kept[size_t(i)].rows, 1.0f / float(factor[size_t(i)]));
     }
-  cv::parallel_for_(cv::Range(0, image.rows), [&](const cv::Range& rows) {
-    for (int y = rows.start; y < rows.end; ++y) {
-      const std::uint8_t* k_row = first.ptr<std::uint8_t>(y);
-      cv::Vec3f* out = image.ptr<cv::Vec3f>(y);
-      for (int x = 0; x < image.cols; ++x) {
-        const int k = k_row[x];
-        if (k == 0 || kept[size_t(k)].empty()) continue;  // level 0, or written already
-        const cv::Mat& m = kept[size_t(k)];
-        if (factor[size_t(k)] == 1) {
-          out[x] = m.ptr<cv::Vec3f>(y)[x];
-          continue;
+  // Row by row, each level the row's pixels take: a reduced one's two rows
+  // enlarged across (each once per stripe, kept while the stripe's rows
+  // read it) and blended down, into the pixels that take it; the same
+  // products and sums, in the same order, as a blend of four neighbours.
+  cv::parallel_for_(
+      cv::Range(0, image.rows),
+      [&](const cv::Range& rows) {
+        std::vector<std::optional<EnlargedRows>> enlarged(size_t(deepest) + 1);
+        std::vector<float> blended;
+        for (int y = rows.start; y < rows.end; ++y) {
+          if (row_deepest[size_t(y)] == 0) continue;
+          const std::uint8_t* k_row = first.ptr<std::uint8_t>(y);
+          cv::Vec3f* out = image.ptr<cv::Vec3f>(y);
+          std::uint32_t taken = 0;  // bit k: a pixel of the row takes level k
+          for (int x = 0; x < image.cols; ++x) taken |= 1u << k_row[x];
+          for (int k = 1; k <= deepest; ++k) {
+            const cv::Mat& m = kept[size_t(k)];
+            if (!(taken >> k & 1u) || m.empty()) continue;  // not taken, or written already
+            const cv::Vec3f* from = nullptr;
+            if (factor[size_t(k)] == 1) {
+              from = m.ptr<cv::Vec3f>(y);
+            } else {
+              if (!enlarged[size_t(k)]) enlarged[size_t(k)].emplace(m, *across[size_t(k)], image.cols);
+              const BilinearAxis& ay = *down[size_t(k)];
+              blended.resize(size_t(image.cols) * 3);
+              blend_rows(enlarged[size_t(k)]->row(ay.lo[size_t(y)]), enlarged[size_t(k)]->row(ay.hi[size_t(y)]),
+                         ay.w[size_t(y)], blended.data(), 3 * image.cols);
+              from = reinterpret_cast<const cv::Vec3f*>(blended.data());
+            }
+            for (int x = 0; x < image.cols; ++x)
+              if (k_row[x] == k) out[x] = from[x];
+          }
         }
-        const BilinearAxis& ax = *across[size_t(k)];
-        const BilinearAxis& ay = *down[size_t(k)];
-        const size_t iy = size_t(y), ix = size_t(x);
-        const cv::Vec3f* r0 = m.ptr<cv::Vec3f>(ay.lo[iy]);
-        const cv::Vec3f* r1 = m.ptr<cv::Vec3f>(ay.hi[iy]);
-        const float fx = ax.w[ix], fy = ay.w[iy];
-        const int x0 = ax.lo[ix], x1 = ax.hi[ix];
-        out[x] = (r0[x0] * (1.0f - fx) + r0[x1] * fx) * (1.0f - fy) + (r1[x0] * (1.0f - fx) + r1[x1] * fx) * fy;
-      }
-    }
-  });
+      },
+      double(std::max(1, cv::getNumThreads()) * 4));  // stripes of rows, each enlarging a level's row once
 }
 
 void AcuityLoss::write_full_row(cv::Mat& image, const cv::Mat& first, const std::vector<std::uint8_t>& row_deepest,

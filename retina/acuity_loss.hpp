@@ -56,6 +56,11 @@ struct AcuityParams {
 // that with a bilinear enlargement the variance is sigma^2).
 cv::Mat acuity_lowpass(const cv::Mat& src, double sigma, int factor);
 
+// A reduced level map (CV_32F) at a frame's size: bilinear, with
+// cv::resize INTER_LINEAR's geometry, a row blended down then across
+// (bilinear_rows.hpp), as AcuityLoss::apply() reads a reduced map.
+cv::Mat enlarged_level(const cv::Mat& level, cv::Size frame);
+
 class AcuityLoss {
  public:
   // rho of a log10 luminance L is (L - bottom_log) / (top_log - bottom_log)
@@ -86,10 +91,12 @@ class AcuityLoss {
   cv::Mat level(const cv::Mat& rho, double t_s, double gaze_x = 0.0, double gaze_y = 0.0, int factor = 1) const;
 
   // Applies the loss to `image` (CV_32FC3) in place for a level map from
-  // level() at the image's size. Levels beyond the coarsest a pixel
-  // takes, and those no pixel can take (bands sharing a threshold) before
-  // a level of the same resolution, are not made; each level made is the
-  // same blur of the image whichever others the frame takes.
+  // level(), at the image's size or held reduced (read at each pixel as
+  // enlarged_level() reads it, without making the full-size map). Levels
+  // beyond the coarsest a pixel takes, and those no pixel can take (bands
+  // sharing a threshold) before a level of the same resolution, are not
+  // made; each level made is the same blur of the image whichever others
+  // the frame takes.
   void apply(cv::Mat& image, const cv::Mat& level) const;
 
  private:

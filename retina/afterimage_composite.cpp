@@ -10,6 +10,7 @@
 #include "retina/bit_masks.hpp"
 #include "retina/enlarged_rows.hpp"
 #include "retina/cone_space.hpp"
+#include "retina/bilinear_rows.hpp"
 #include "retina/vector_clones.hpp"
 
 namespace eyestream::retina {
@@ -66,12 +67,6 @@ void composite_row(const float* j, const float* g, const float* b, Rows3 to_lms,
   }
 }
 
-// Then down: the blend of two enlarged rows (weight fy of b).
-EYESTREAM_VECTOR_CLONES
-void blend_rows(const float* a, const float* b, float fy, float* out, int n) {
-  for (int i = 0; i < n; ++i) out[i] = a[i] * (1.0f - fy) + b[i] * fy;
-}
-
 }  // namespace
 
 void composite_afterimages(const cv::Mat& tone_mapped, const cv::Mat& gain, const cv::Mat& bleach, cv::Mat& out) {
@@ -91,7 +86,7 @@ void composite_afterimages(const cv::Mat& tone_mapped, const cv::Mat& gain, cons
     for (int y = rows.start; y < rows.end; ++y) {
       const float* g = gain.ptr<float>(full ? y : 0);
       const float* b = bleach.ptr<float>(full ? y : 0);
-      if (!full) {  // the maps' row, enlarged
+      if (!full) {  // the maps' row, enlarged: across, then the blend of two rows down
         const size_t iy = size_t(y);
         blend_rows(g_rows->row(down.lo[iy]), g_rows->row(down.hi[iy]), down.w[iy], g_row.data(), 3 * w);
         blend_rows(b_rows->row(down.lo[iy]), b_rows->row(down.hi[iy]), down.w[iy], b_row.data(), 3 * w);

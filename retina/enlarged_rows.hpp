@@ -8,19 +8,9 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
-#include "retina/bilinear_axis.hpp"
+#include "retina/bilinear_rows.hpp"
 
 namespace eyestream::retina {
-
-// A reduced map's row enlarged across to n pixels (interleaved, 3
-// channels), as cv::resize INTER_LINEAR's horizontal pass.
-inline void enlarge_across(const float* r, const BilinearAxis& across, float* out, int n) {
-  for (int x = 0; x < n; ++x) {
-    const float fx = across.w[size_t(x)];
-    const int x0 = 3 * across.lo[size_t(x)], x1 = 3 * across.hi[size_t(x)];
-    for (int c = 0; c < 3; ++c) out[3 * x + c] = r[x0 + c] * (1.0f - fx) + r[x1 + c] * fx;
-  }
-}
 
 // A reduced map's rows enlarged across, the last two kept: a stripe of
 // output rows reads each of them for about 1 / scale rows in turn.
@@ -36,7 +26,7 @@ class EnlargedRows {
     if (k < 0) {  // replaces the row not asked for last
       k = 1 - last_;
       index_[k] = i;
-      enlarge_across(map_.ptr<float>(i), across_, rows_[k].data(), n_);
+      enlarge_row3(map_.ptr<float>(i), across_, rows_[k].data(), n_);
     }
     last_ = k;
     return rows_[k].data();

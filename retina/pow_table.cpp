@@ -16,8 +16,8 @@ PowTable::PowTable(double exponent) : exponent_(exponent), table_(size_t(kOctave
 }
 
 EYESTREAM_VECTOR_CLONES
-void PowTable::batch(const float* x, float* y, int n) const {
-  const float* t = table_.data();
+void PowTable::batch(const float* __restrict x, float* __restrict y, int n) const {
+  const float* __restrict t = table_.data();
   int below = 0;  // values under the table's least octave, other than 0
   for (int i = 0; i < n; ++i) {
     std::uint32_t bits;
@@ -25,10 +25,10 @@ void PowTable::batch(const float* x, float* y, int n) const {
     bits &= 0x7fffffffu;  // -0 as 0
     const int octave = int(bits >> 23) - 127 + kOctaves;
     const int under = octave < 0;
-    const std::uint32_t at = std::uint32_t(octave * (1 - under)) * kSteps + ((bits >> 13) & (kSteps - 1));
+    const int at = octave * (1 - under) * kSteps + int((bits >> 13) & (kSteps - 1));
     const float f = float(int(bits & 8191u)) * (1.0f / 8192.0f);
     const float v = t[at] + f * (t[at + 1] - t[at]);
-    y[i] = under ? 0.0f : v;
+    y[i] = v * float(1 - under);  // (v is finite: 0 under the table)
     below |= under & int(bits != 0);
   }
   if (below) {  // rare: std::pow, as operator() takes it

@@ -31,7 +31,8 @@ class PowTable {
 
   // y[i] = x[i]^p for n values in [0, 1], exactly as operator() gives
   // them: a row at a call, compiled for AVX-512 and AVX2 beside the baseline
-  // (vector_clones.hpp).
+  // (vector_clones.hpp), the table read by vector gathers. x and y must not
+  // overlap.
   void batch(const float* x, float* y, int n) const;
 
   // x^p for any x >= 0: above 1 as 1 / (1/x)^p.

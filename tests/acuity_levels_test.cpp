@@ -5,7 +5,8 @@
 // made), each deeper one the last blurred by the variance it lacks; pixels that keep every band are left as they
 // were. With the next level's pixels beside them, under the presets'
 // reduced levels too, each pixel's level is the same: what a level holds
-// does not depend on which others the frame takes.
+// does not depend on which others the frame takes. A level map held
+// reduced acts as its enlargement, which is cv::resize's bilinear one.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -81,6 +82,34 @@ TEST(AcuityLevels, ALevelIsTheSameWhicheverOthersTheFrameTakes) {
       EXPECT_EQ(cv::norm(mixed(r), alone(r), cv::NORM_INF), 0.0) << "band " << k << ", pyramid " << pyramid;
     }
   }
+}
+
+TEST(AcuityLevels, AReducedLevelMapActsAsItsEnlargementWhichIsCvResizes) {
+  // A frame not a whole number of reduced pixels each way (203 / 51, 117 /
+  // 30), a map crossing several thresholds in both directions.
+  const cv::Size size(203, 117), reduced(51, 30);
+  AcuityParams p;
+  p.pyramid_from_px = 1.5;
+  const AcuityLoss loss(p, 64.0, 1);
+  const std::vector<double>& tau = loss.thresholds();
+  cv::Mat level(reduced, CV_32F);
+  for (int y = 0; y < reduced.height; ++y)
+    for (int x = 0; x < reduced.width; ++x)
+      level.at<float>(y, x) = float(tau.back() - 0.2 + (tau.front() - tau.back() + 0.4) *
+                                                            (0.5 + 0.5 * std::sin(0.3 * x) * std::cos(0.2 * y)));
+  // The enlargement: OpenCV's bilinear resize, to float rounding (its
+  // passes run in the other order).
+  const cv::Mat enlarged = enlarged_level(level, size);
+  cv::Mat want;
+  cv::resize(level, want, size, 0, 0, cv::INTER_LINEAR);
+  EXPECT_LT(cv::norm(enlarged, want, cv::NORM_INF), 1e-5);
+  cv::Mat image(size, CV_32FC3);
+  cv::randu(image, 0.0, 1.0);
+  cv::Mat from_reduced = image.clone(), from_enlarged = image.clone();
+  loss.apply(from_reduced, level);
+  loss.apply(from_enlarged, enlarged);
+  EXPECT_EQ(cv::norm(from_reduced, from_enlarged, cv::NORM_INF), 0.0);
+  EXPECT_GT(cv::norm(from_reduced, image, cv::NORM_INF), 0.01);  // the loss blurred something
 }
 
 }  // namespace

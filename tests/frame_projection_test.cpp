@@ -53,8 +53,9 @@ TEST(FrameProjection, LocalScaleAndSolidAngleAreThePinholesOwn) {
   for (int y = 0; y < kH; ++y)
     for (int x = 0; x < kW; ++x) {
       sr += kPinhole.pixel_sr(x, y);
-      if ((x * 7 + y * 13) % 997 == 0)
+      if ((x * 7 + y * 13) % 997 == 0) {
         ASSERT_NEAR(w.at<float>(y, x), kPinhole.pixel_sr(x, y) / kPinhole.pixel_sr(kW / 2, kH / 2), 1e-3);
+      }
     }
   EXPECT_NEAR(p.solid_angle_deg2() / (sr * std::pow(180.0 / M_PI, 2)), 1.0, 1e-4);
 }
@@ -79,6 +80,8 @@ TEST(FrameProjection, CarryingAFrameIntoThePlaneKeepsItsLight) {
   EXPECT_NEAR(colour_flux[0] / frame_flux, 1.0, 0.03);
   EXPECT_NEAR(colour_flux[1] / frame_flux, 0.5, 0.015);
   EXPECT_NEAR(colour_flux[2] / frame_flux, 0.25, 0.0075);
+  EXPECT_NEAR(colour_flux[1] / colour_flux[0], 0.5, 1e-6);  // the same shares in every channel
+  EXPECT_NEAR(colour_flux[2] / colour_flux[0], 0.25, 1e-6);
   const cv::Mat ones(kH, kW, CV_32FC3, cv::Scalar::all(2.0));
   const cv::Mat mean = p.to_plane_mean(ones, cv::Scalar::all(-1.0));
   EXPECT_FLOAT_EQ(mean.at<cv::Vec3f>(mean.rows / 2, mean.cols / 2)[1], 2.0f);

@@ -160,6 +160,29 @@ TEST(StageSkipping, MovingGazeOverAStillSceneKeepsTheRetinaRunning) {
   for (size_t i = 1; i < on.reports.size(); ++i) EXPECT_TRUE(on.reports[i].active.retina) << "frame " << i;
 }
 
+TEST(StageSkipping, AFrameKnownUnchangedAtRestIsComparedAgainAfterTheStimulusMoved) {
+  // At rest the retina knows a frame it found unchanged by the frame's
+  // digest and the gaze (retina_stage.hpp), without carrying it to the
+  // grid again. Scene A at rest, then B (3e-4 brighter: beyond the
+  // stimulus tolerance), then A again: both step, A's frames rest again,
+  // and a gaze moved by a pixel over the same frame steps.
+  const cv::Mat a = still_scene(30.0f), b = a * (1.0 + 3e-4);
+  std::vector<cv::Mat> frames(20, a);
+  frames.push_back(b);
+  frames.resize(40, a);
+  std::vector<Gaze> gaze(35, Gaze(40, 27));
+  gaze.resize(40, Gaze(41, 27));
+  Settings s;
+  s.glare = false;  // the retina sees the frame itself
+  const Watch on = watch(frames, gaze, true, s), off = watch(frames, gaze, false, s);
+  for (size_t i = 5; i < 20; ++i) EXPECT_FALSE(on.reports[i].active.retina) << "frame " << i;
+  EXPECT_TRUE(on.reports[20].active.retina) << "B";
+  EXPECT_TRUE(on.reports[21].active.retina) << "A again";
+  for (size_t i = 23; i < 35; ++i) EXPECT_FALSE(on.reports[i].active.retina) << "frame " << i;
+  EXPECT_TRUE(on.reports[35].active.retina) << "the gaze moved";
+  EXPECT_LE(max_linear_difference(on, off), 1e-4);
+}
+
 TEST(StageSkipping, PhotopicFramesSkipMesopicWorkAndDarkOnesDoNot) {
   const std::vector<Gaze> gaze(10, Gaze(48, 27));
   const Watch bright = watch(std::vector<cv::Mat>(10, still_scene(50.0f)), gaze, true);

@@ -18,7 +18,10 @@ MesopicStage::MesopicStage(const Plan& plan) : plan_(plan) {
 
 cv::Mat MesopicStage::acuity_level(const cv::Mat& rgb, double adaptation_log, double time_s, double gaze_x,
                                    double gaze_y) const {
-  return level_of(retina::floored_luminance(rgb, plan_.dark_cd_m2), adaptation_log, time_s, gaze_x, gaze_y);
+  // At the frame's size, read from the reduced map as render() reads it.
+  const cv::Mat reduced =
+      level_of(retina::floored_luminance(rgb, plan_.dark_cd_m2), adaptation_log, time_s, gaze_x, gaze_y);
+  return retina::enlarged_level(reduced, rgb.size());
 }
 
 cv::Mat MesopicStage::level_of(const cv::Mat& floored, double adaptation_log, double time_s, double gaze_x,
@@ -37,9 +40,7 @@ cv::Mat MesopicStage::level_of(const cv::Mat& floored, double adaptation_log, do
       for (int x = 0; x < rho.cols; ++x) r[x] = std::max(float(retina::mesopic_rho(std::log10(l[x]), m)), floor_rho);
     }
   });
-  cv::Mat level = acuity_->level(rho, time_s, gaze_x, gaze_y, f);
-  if (f > 1) cv::resize(level, level, floored.size(), 0, 0, cv::INTER_LINEAR);
-  return level;
+  return acuity_->level(rho, time_s, gaze_x, gaze_y, f);
 }
 
 void MesopicStage::render(cv::Mat rgb, const retina::ToneCurve& curve, double adaptation_log, double time_s,

@@ -46,7 +46,9 @@ class MesopicStage {
                        double gaze_y = 0.0) const;
 
  private:
-  // acuity_level() of the frame's floored luminance (floored_luminance()).
+  // acuity_level() of the frame's floored luminance (floored_luminance()),
+  // held reduced by the acuity's level_factor() (as AcuityLoss::apply()
+  // takes it).
   cv::Mat level_of(const cv::Mat& floored, double adaptation_log, double time_s, double gaze_x, double gaze_y) const;
 
   const Plan plan_;

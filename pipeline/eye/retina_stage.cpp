@@ -110,14 +110,25 @@ void RetinaStage::advance(const cv::Mat& rgb, const std::vector<GazeSegment>& fr
   // with it; only its clamp of negative cone values (light no real scene
   // has: out-of-gamut or ringing inputs) now acts on the mean instead of on
   // each pixel.
-  const cv::Mat reduced = p.identity() ? grid_.reduce(rgb) : reduce_frame(rgb);
-  const cv::Mat lms = retina::to_cone_stimulus(reduced, plan_.retina.double_precision ? CV_64F : CV_32F);
+  // Made when a step group needs it: at rest, a still frame's groups are
+  // known unchanged by the frame's digest alone.
+  cv::Mat lms;
+  const auto cone_stimulus = [&]() -> const cv::Mat& {
+    if (lms.empty()) {
+      const cv::Mat reduced = p.identity() ? grid_.reduce(rgb) : reduce_frame(rgb);
+      lms = retina::to_cone_stimulus(reduced, plan_.retina.double_precision ? CV_64F : CV_32F);
+    }
+    return lms;
+  };
   std::vector<GazeSegment> segments = frame_segments;
   for (GazeSegment& s : segments) {
     const cv::Point2d at = p.to_plane({s.x, s.y});
     s.x = at.x;
     s.y = at.y;
   }
+  // The frame's digest, at rest only (where a group may be unchanged).
+  std::optional<FrameDigest> digest;
+  if (plan_.skip && resting_) digest = frame_digest(rgb);
   double frame_dt = 0.0;
   stepped_ = false;
   for (const StepGroup& g : group_segments(segments, plan_.retina.substep_tolerance_px)) {
@@ -128,19 +139,28 @@ void RetinaStage::advance(const cv::Mat& rgb, const std::vector<GazeSegment>& fr
     if (!(plan_.skip && resting_) && !(pending_dt_ > 0) && !(g.closed && last_dark_)) {
       last_stimulus_.release();
       last_dark_ = false;
+      unchanged_source_.reset();
     }
-    const cv::Mat stimulus = g.closed ? dark_stimulus() : sample(lms, g.x, g.y, surround);
     const double curve_log = adaptation_log[g.last];
+    std::optional<StimulusSource> source;
+    if (digest && !g.closed) source = StimulusSource{*digest, surround_cd_m2, g.x, g.y};
+    if (started_ && plan_.skip && resting_ && source && source == unchanged_source_ && same_curve(curve_log)) {
+      pending_dt_ += g.dt;  // what unchanged() said of this source last time, it says again
+      continue;
+    }
+    const cv::Mat stimulus = g.closed ? dark_stimulus() : sample(cone_stimulus(), g.x, g.y, surround);
     const retina::ToneCurve curve(curve_log, plan_.tone);
     if (!started_) {
       state_.rest(stimulus, curve);
       started_ = true;
     } else if (plan_.skip && resting_ && unchanged(stimulus, curve_log)) {
       pending_dt_ += g.dt;
+      if (source) unchanged_source_ = source;
       continue;
     }
     catch_up();
     last_stimulus_.release();  // (replaced below)
+    unchanged_source_.reset();
     state_.step(stimulus, curve, g.dt);
     frame_dt += g.dt;  // time deferred at rest is softened by catch_up()
     last_stimulus_ = stimulus;
@@ -192,7 +212,7 @@ void RetinaStage::catch_up() {
 }
 
 bool RetinaStage::unchanged(const cv::Mat& stimulus, double curve_log) const {
-  if (last_stimulus_.empty() || std::abs(curve_log - last_curve_log_) > 1e-9) return false;
+  if (last_stimulus_.empty() || !same_curve(curve_log)) return false;
   if (stimulus.data == last_stimulus_.data) return true;
   // |s - s_last| <= tol (s_last + dark) at every site and cone.
   cv::Mat excess;
@@ -321,6 +341,7 @@ void RetinaStage::restore(const std::vector<cv::Mat>& mats, bool started) {
   CV_Assert(mats.size() == 6 && mats[5].total() == 3 && mats[5].type() == CV_64F);
   state_.restore({mats.begin(), mats.begin() + 4});
   last_stimulus_ = mats[4].clone();
+  unchanged_source_.reset();
   last_dark_ = false;
   last_curve_log_ = mats[5].at<double>(0);
   pending_dt_ = mats[5].at<double>(1);

@@ -10,6 +10,7 @@
 
 #include "io/staged_file.hpp"
 #include "pipeline/eye/gaze_timeline.hpp"
+#include "pipeline/memory/frame_digest.hpp"
 #include "pipeline/settings/plan.hpp"
 #include "retina/retina_state.hpp"
 #include "retina/retinal_grid.hpp"
@@ -103,6 +104,22 @@ class RetinaStage {
   // The afterimage spread over dt_s seconds, in grid sites^2.
   double spread_variance_sites2(double dt_s) const;
   bool unchanged(const cv::Mat& stimulus, double curve_log) const;
+  bool same_curve(double curve_log) const { return std::abs(curve_log - last_curve_log_) <= 1e-9; }
+  // What a stimulus is made from: the retinal image (by its digest), the
+  // surround and the gaze on the plane. Equal sources give the same
+  // stimulus, bit for bit.
+  struct StimulusSource {
+    FrameDigest image;
+    double surround = 0.0, x = 0.0, y = 0.0;
+    bool operator==(const StimulusSource& o) const {
+      return image == o.image && surround == o.surround && x == o.x && y == o.y;
+    }
+  };
+  // At rest, the source of the last stimulus found unchanged against
+  // last_stimulus_: the same source again is unchanged again, known without
+  // carrying the frame to the grid (a still scene's frames at rest). Let go
+  // of whenever last_stimulus_ changes.
+  std::optional<StimulusSource> unchanged_source_;
   cv::Mat last_stimulus_;
   bool last_dark_ = false;  // last_stimulus_ is dark_stimulus()'s
   double last_curve_log_ = 0.0;
