@@ -15,9 +15,11 @@
 #include <OpenEXR/ImfStandardAttributes.h>
 
 #include <exception>
+#include <string>
 #include <vector>
 
 #include "io/error.hpp"
+#include "io/half_rows.hpp"
 #include "io/primaries.hpp"
 
 namespace eyestream::io {
@@ -166,26 +168,52 @@ ExrImage read_exr(const std::string& path, std::int64_t max_pixels, const std::s
     }
 
     image.rgb.create(int(height), int(width), CV_32FC3);
-    const size_t xs = 3 * sizeof(float), ys = xs * size_t(width);
-    char* base = reinterpret_cast<char*>(image.rgb.ptr<float>());
-    Imf::FrameBuffer fb;
-    if (image.channels == "Y") {
-      fb.insert(prefix + "Y", Imf::Slice::Make(Imf::FLOAT, base, dw, xs, ys));
-    } else {
-      fb.insert(prefix + "R", Imf::Slice::Make(Imf::FLOAT, base, dw, xs, ys));
-      fb.insert(prefix + "G", Imf::Slice::Make(Imf::FLOAT, base + sizeof(float), dw, xs, ys));
-      fb.insert(prefix + "B", Imf::Slice::Make(Imf::FLOAT, base + 2 * sizeof(float), dw, xs, ys));
-    }
-    file.setFrameBuffer(fb);
+    const std::vector<std::string> names =
+        image.channels == "Y" ? std::vector<std::string>{"Y"} : std::vector<std::string>{"R", "G", "B"};
     // Bands of whole line buffers (16 lines for ZIP, 32 for PIZ ...), each
     // finished while it is in cache.
     const int band = std::max(16, lines_per_block(header.compression()));
+    // Half channels (most EXRs) are read as they are stored and made floats
+    // here by vector loops (half_rows.hpp); others OpenEXR converts.
+    bool halves = true;
+    for (const std::string& name : names) {
+      const Imf::Channel* c = header.channels().findChannel(prefix + name);
+      halves = halves && c && c->type == Imf::HALF && c->xSampling == 1 && c->ySampling == 1;
+    }
+    std::vector<std::uint16_t> stored(halves ? names.size() * size_t(band) * size_t(width) : 0);
+    const size_t plane = size_t(band) * size_t(width);  // one channel's halves in a band
+    if (!halves) {
+      const size_t xs = 3 * sizeof(float), ys = xs * size_t(width);
+      char* base = reinterpret_cast<char*>(image.rgb.ptr<float>());
+      Imf::FrameBuffer fb;
+      for (size_t c = 0; c < names.size(); ++c)
+        fb.insert(prefix + names[c], Imf::Slice::Make(Imf::FLOAT, base + c * sizeof(float), dw, xs, ys));
+      file.setFrameBuffer(fb);
+    }
     for (int y0 = dw.min.y; y0 <= dw.max.y; y0 += band) {
       const int y1 = int(std::min<std::int64_t>(std::int64_t(y0) + band - 1, dw.max.y));
+      if (halves) {
+        const Imath::Box2i lines(Imath::V2i(dw.min.x, y0), Imath::V2i(dw.max.x, y1));
+        Imf::FrameBuffer fb;
+        for (size_t c = 0; c < names.size(); ++c)
+          fb.insert(prefix + names[c], Imf::Slice::Make(Imf::HALF, stored.data() + c * plane, lines, sizeof(std::uint16_t),
+                                                        sizeof(std::uint16_t) * size_t(width)));
+        file.setFrameBuffer(fb);
+      }
       file.readPixels(y0, y1);
       cv::Mat rows = image.rgb.rowRange(y0 - dw.min.y, y1 - dw.min.y + 1);
-      if (image.channels == "Y")
+      if (halves) {
+        for (int y = 0; y < rows.rows; ++y) {
+          const size_t at = size_t(y) * size_t(width);
+          if (names.size() == 1)
+            halves_to_grey_rgb(stored.data() + at, rows.ptr<float>(y), int(width));
+          else
+            halves_to_rgb(stored.data() + at, stored.data() + plane + at, stored.data() + 2 * plane + at,
+                          rows.ptr<float>(y), int(width));
+        }
+      } else if (image.channels == "Y") {
         rows.forEach<cv::Vec3f>([](cv::Vec3f& p, const int*) { p[1] = p[2] = p[0]; });
+      }
       if (on_rows) on_rows(image, rows);
     }
     return image;

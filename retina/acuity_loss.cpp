@@ -3,6 +3,7 @@
 #include "retina/acuity_curve.hpp"
 #include "retina/bilinear_axis.hpp"
 #include "retina/gaussian_blur.hpp"
+#include "retina/halve_frame.hpp"
 #include "retina/bilinear_rows.hpp"
 #include "retina/enlarged_rows.hpp"
 #include "retina/vector_clones.hpp"
@@ -222,7 +223,7 @@ void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
     }
     if (halving) {
       cv::Mat reduced;
-      cv::resize(from, reduced, cv::Size((from.cols + 1) / 2, (from.rows + 1) / 2), 0, 0, cv::INTER_AREA);
+      halve_frame(from, reduced);
       variance += f * f / 4.0;
       f *= 2;
       from = reduced;

@@ -5,19 +5,33 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
+#include "retina/log_sum.hpp"
 #include "retina/luminance.hpp"
+#include "retina/vector_clones.hpp"
 
 namespace eyestream::retina {
 
 namespace {
 
-// sum_x a[x] w[x] over [x0, x1) in double (w = 1 when null).
+// sum_x a[x] w[x] over [x0, x1) in double (w = 1 when null), in eight
+// partial sums added in a fixed order, so the loop runs as vectors
+// (vector_clones.hpp) and gives the same value on any machine.
+EYESTREAM_VECTOR_CLONES
 double row_sum(const float* a, const float* w, int x0, int x1) {
+  constexpr int kLanes = 8;
+  double lanes[kLanes] = {};
+  int x = x0;
+  if (w) {
+    for (; x + kLanes <= x1; x += kLanes)
+      for (int k = 0; k < kLanes; ++k) lanes[k] += double(a[x + k]) * double(w[x + k]);
+    for (int k = 0; x < x1; ++x, ++k) lanes[k] += double(a[x]) * double(w[x]);
+  } else {
+    for (; x + kLanes <= x1; x += kLanes)
+      for (int k = 0; k < kLanes; ++k) lanes[k] += double(a[x + k]);
+    for (int k = 0; x < x1; ++x, ++k) lanes[k] += double(a[x]);
+  }
   double s = 0.0;
-  if (w)
-    for (int x = x0; x < x1; ++x) s += double(a[x]) * double(w[x]);
-  else
-    for (int x = x0; x < x1; ++x) s += a[x];
+  for (double lane : lanes) s += lane;
   return s;
 }
 
@@ -60,21 +74,49 @@ double sum_of_weights(const cv::Mat& weights) {
   return weights.empty() ? 0.0 : region_sum(weights, cv::Mat(), 0, weights.cols, 0, weights.rows);
 }
 
-double frame_mean_luminance(const cv::Mat& rgb, double floor_cd_m2, const cv::Mat& weights, double weight_total) {
+SceneMeans scene_means(const cv::Mat& rgb, double floor_cd_m2, const cv::Mat& weights, double weight_total,
+                       double band_px, const std::function<void(int)>& also_per_row) {
   CV_Assert(rgb.type() == CV_32FC3 && (weights.empty() || (weights.type() == CV_32F && weights.size() == rgb.size())));
-  // As the constructor, each row's luminance made and summed while in cache.
-  std::vector<double> sums(size_t(rgb.rows), 0.0);
+  CV_Assert(floor_cd_m2 > 0.0);
+  // Each row's floored luminance made once and read by both sums while in
+  // cache; the rows' sums added in order: the same whatever the thread
+  // count. The mean as the field's constructor and frame_mean() make it.
+  const bool with_edge = band_px > 0.0;
+  const int cols = rgb.cols, rows = rgb.rows;
+  const int b = with_edge ? std::max(1, int(std::lround(band_px))) : 0;
+  const bool all = 2 * b >= cols || 2 * b >= rows;
+  std::vector<double> sums(size_t(rows), 0.0), logs(size_t(rows), 0.0);
   const float floor = float(floor_cd_m2);
-  cv::parallel_for_(cv::Range(0, rgb.rows), [&](const cv::Range& r) {
-    std::vector<float> l(size_t(rgb.cols));
+  cv::parallel_for_(cv::Range(0, rows), [&](const cv::Range& r) {
+    std::vector<float> l(static_cast<size_t>(cols));
     for (int y = r.start; y < r.end; ++y) {
-      floored_luminance_row(rgb.ptr<float>(y), floor, l.data(), rgb.cols);
-      sums[size_t(y)] = row_sum(l.data(), weights.empty() ? nullptr : weights.ptr<float>(y), 0, rgb.cols);
+      floored_luminance_row(rgb.ptr<float>(y), floor, l.data(), cols);
+      if (also_per_row) also_per_row(y);
+      sums[size_t(y)] = row_sum(l.data(), weights.empty() ? nullptr : weights.ptr<float>(y), 0, cols);
+      if (!with_edge) continue;
+      logs[size_t(y)] = (all || y < b || y >= rows - b) ? log2_sum(l.data(), cols)
+                                                        : log2_sum(l.data(), b) + log2_sum(l.data() + cols - b, b);
     }
   });
-  double total = 0.0;
+  SceneMeans means;
+  double total = 0.0, log_total = 0.0;
   for (double s : sums) total += s;
-  return weights.empty() ? total / (double(rgb.cols) * double(rgb.rows)) : total / weight_total;
+  for (double s : logs) log_total += s;
+  means.mean = weights.empty() ? total / (double(cols) * double(rows)) : total / weight_total;
+  if (with_edge) {
+    const double band_pixels =
+        all ? double(cols) * double(rows) : 2.0 * double(b) * double(cols) + 2.0 * double(b) * double(rows - 2 * b);
+    means.edge = std::exp2(log_total / band_pixels);
+  }
+  return means;
+}
+
+double frame_mean_luminance(const cv::Mat& rgb, double floor_cd_m2, const cv::Mat& weights, double weight_total) {
+  return scene_means(rgb, floor_cd_m2, weights, weight_total, 0.0).mean;
+}
+
+double edge_log_mean(const cv::Mat& rgb, double band_px, double floor_cd_m2) {
+  return scene_means(rgb, floor_cd_m2, cv::Mat(), 0.0, std::max(band_px, 0.5)).edge;
 }
 
 double LuminanceField::patch_log_mean(double x, double y, double half_x, double half_y, double surround_cd_m2) const {
@@ -97,32 +139,6 @@ double LuminanceField::patch_log_mean(double x, double y, double half_x, double 
           integral_.at<double>(y0, x0);
   }
   return std::log10((sum + (total - inside) * surround_cd_m2) / total);
-}
-
-double edge_log_mean(const cv::Mat& rgb, double band_px, double floor_cd_m2) {
-  CV_Assert(rgb.type() == CV_32FC3);
-  const int b = std::max(1, int(std::lround(band_px)));
-  const bool all = 2 * b >= rgb.cols || 2 * b >= rgb.rows;
-  const double floor_log = std::log10(floor_cd_m2);
-  double sum = 0.0;
-  std::int64_t count = 0;
-  const auto add = [&](const cv::Vec3f* in, int from, int to) {
-    for (int x = from; x < to; ++x) {
-      const float l = photopic_luminance(in[x]);
-      sum += (l > floor_cd_m2 && std::isfinite(l)) ? std::log10(double(l)) : floor_log;
-      ++count;
-    }
-  };
-  for (int y = 0; y < rgb.rows; ++y) {
-    const cv::Vec3f* in = rgb.ptr<cv::Vec3f>(y);
-    if (all || y < b || y >= rgb.rows - b) {
-      add(in, 0, rgb.cols);
-    } else {
-      add(in, 0, b);
-      add(in, rgb.cols - b, rgb.cols);
-    }
-  }
-  return std::pow(10.0, sum / double(count));
 }
 
 }  // namespace eyestream::retina

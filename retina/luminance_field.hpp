@@ -7,6 +7,7 @@
 // Not for concurrent use (the integral image and the mean are made lazily).
 #pragma once
 
+#include <functional>
 #include <opencv2/core.hpp>
 
 namespace eyestream::retina {
@@ -57,7 +58,19 @@ double sum_of_weights(const cv::Mat& weights);
 // the frame's edge (the whole frame when the band covers it): what the
 // world beyond the frame is taken to be. Geometric, so one bright light in
 // the band does not light the whole surround. Luminance below floor_cd_m2
-// (and non-finite) counts as floor_cd_m2.
+// (and non-finite) counts as floor_cd_m2, which must be positive. The logs
+// are log_sum.hpp's (within 1e-14 of the exact ones).
 double edge_log_mean(const cv::Mat& rgb, double band_px, double floor_cd_m2);
+
+// Both in one pass over the frame: the mean as frame_mean_luminance, and
+// the edge's geometric mean as edge_log_mean when band_px > 0 (else edge
+// is 0). also_per_row(y), when given, is called once for each row, on the
+// pass's threads, right after the row is read: for another digest of the
+// frame while its row is in cache (the glare stage's frame digest).
+struct SceneMeans {
+  double mean = 0.0, edge = 0.0;
+};
+SceneMeans scene_means(const cv::Mat& rgb, double floor_cd_m2, const cv::Mat& weights, double weight_total,
+                       double band_px, const std::function<void(int)>& also_per_row = {});
 
 }  // namespace eyestream::retina

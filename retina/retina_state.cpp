@@ -1,5 +1,7 @@
 #include "retina/retina_state.hpp"
 
+#include "retina/afterimage_row.hpp"
+#include "retina/cone_step_row.hpp"
 #include "retina/diffusion.hpp"
 #include "retina/pow_table.hpp"
 
@@ -86,6 +88,29 @@ void step_sites(const cv::Mat& lms, const ToneCurve& curve, const PhotoreceptorP
   });
 }
 
+// The same step in float, a row at a time by cone_step_row.hpp's vector
+// loops (there every site is computed: no test against its neighbour).
+void step_sites_float(const cv::Mat& lms, const ToneCurve& curve, const PhotoreceptorParams& p, double c_max,
+                      double dt, cv::Mat& b_inf, cv::Mat& response, cv::Mat& bleached, cv::Mat& deficit) {
+  b_inf.create(lms.size(), lms.type());
+  response.create(lms.size(), lms.type());
+  ConeStep k;
+  for (int c = 0; c < 3; ++c) {
+    k.bleach_rate[c] = float(p.bleach_rate[c]);
+    k.regen_rate[c] = float(p.regen_rate_per_s[c]);
+  }
+  k.dt = float(dt);
+  k.calcium_decay = std::exp(-float(p.calcium_efflux_per_s) * float(dt));
+  k.c_max = float(c_max);
+  k.sigma = curve.sigma();
+  k.power = &curve.power();
+  cv::parallel_for_(cv::Range(0, lms.rows), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y)
+      step_cone_row(k, lms.ptr<float>(y), b_inf.ptr<float>(y), response.ptr<float>(y), bleached.ptr<float>(y),
+                    deficit.ptr<float>(y), lms.cols);
+  });
+}
+
 template <typename T>
 void afterimage_sites(const PhotoreceptorParams& p, double c_max, const AfterimageOptions& o, const cv::Mat& bleached,
                       const cv::Mat& deficit, const cv::Mat& bleached_rest, const cv::Mat& response,
@@ -128,6 +153,34 @@ void afterimage_sites(const PhotoreceptorParams& p, double c_max, const Afterima
   for (float v : row_largest) maps.largest = std::max(maps.largest, v);
 }
 
+// The same terms in float, a row at a time by afterimage_row.hpp's vector
+// loops.
+void afterimage_sites_float(const PhotoreceptorParams& p, double c_max, const AfterimageOptions& o,
+                            const cv::Mat& bleached, const cv::Mat& deficit, const cv::Mat& bleached_rest,
+                            const cv::Mat& response, const cv::Mat& visibility, AfterimageMaps& maps, bool with_maps) {
+  if (with_maps) {
+    maps.gain_excess.create(bleached.size(), CV_32FC3);
+    maps.bleach.create(bleached.size(), CV_32FC3);
+  }
+  AfterimageTerms k;
+  k.gain = o.local_adaptation;
+  k.bleach = o.bleaching;
+  k.c_max = c_max;
+  k.epsilon = float(p.gain_epsilon);
+  k.strength = p.bleaching_strength;
+  k.power = &shared_pow_table(p.adaptation_strength);  // alpha^j2 by table: 2e-7 relative (pow_table.hpp)
+  std::vector<float> row_largest(size_t(bleached.rows), 0.0f);
+  cv::parallel_for_(cv::Range(0, bleached.rows), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y)
+      row_largest[size_t(y)] =
+          afterimage_row(k, bleached.ptr<float>(y), deficit.ptr<float>(y), bleached_rest.ptr<float>(y),
+                         response.ptr<float>(y), visibility.ptr<float>(y),
+                         with_maps ? maps.gain_excess.ptr<float>(y) : nullptr,
+                         with_maps ? maps.bleach.ptr<float>(y) : nullptr, bleached.cols);
+  });
+  for (float v : row_largest) maps.largest = std::max(maps.largest, v);
+}
+
 bool is_double(const cv::Mat& m) { return m.depth() == CV_64F; }
 
 }  // namespace
@@ -161,7 +214,7 @@ void RetinaState::step(const cv::Mat& lms, const ToneCurve& curve, double dt_s) 
   if (is_double(lms))
     step_sites<double>(lms, curve, params_, c_max_, dt_s, bleached_rest_, response_, bleached_, deficit_);
   else
-    step_sites<float>(lms, curve, params_, c_max_, dt_s, bleached_rest_, response_, bleached_, deficit_);
+    step_sites_float(lms, curve, params_, c_max_, dt_s, bleached_rest_, response_, bleached_, deficit_);
 }
 
 void RetinaState::release_rest() {
@@ -212,8 +265,8 @@ AfterimageMaps RetinaState::afterimage_terms(const AfterimageOptions& options, c
     afterimage_sites<double>(params_, c_max_, options, bleached_(region), deficit_(region), bleached_rest_(region),
                              response_(region), visibility(region), maps, with_maps);
   else
-    afterimage_sites<float>(params_, c_max_, options, bleached_(region), deficit_(region), bleached_rest_(region),
-                            response_(region), visibility(region), maps, with_maps);
+    afterimage_sites_float(params_, c_max_, options, bleached_(region), deficit_(region), bleached_rest_(region),
+                           response_(region), visibility(region), maps, with_maps);
   return maps;
 }
 

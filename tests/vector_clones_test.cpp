@@ -1,5 +1,5 @@
-// The glare library's copy of the vector-loop attribute is the retina
-// library's (each library stands alone, so each has its own header).
+// The glare and io libraries' copies of the vector-loop attribute are the
+// retina library's (each library stands alone, so each has its own header).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -12,12 +12,16 @@ static const std::string kRetinas = EYESTREAM_EXPANDED(EYESTREAM_VECTOR_CLONES);
 #undef EYESTREAM_VECTOR_CLONES
 #include "glare/vector_clones.hpp"
 static const std::string kGlares = EYESTREAM_EXPANDED(EYESTREAM_VECTOR_CLONES);
+#undef EYESTREAM_VECTOR_CLONES
+#include "io/vector_clones.hpp"
+static const std::string kIos = EYESTREAM_EXPANDED(EYESTREAM_VECTOR_CLONES);
 
 namespace eyestream {
 namespace {
 
-TEST(VectorClones, TheGlareLibrarysCopyIsTheRetinas) {
+TEST(VectorClones, TheGlareAndIoLibrariesCopiesAreTheRetinas) {
   EXPECT_EQ(kGlares, kRetinas);
+  EXPECT_EQ(kIos, kRetinas);
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
   EXPECT_NE(kRetinas.find("avx512f"), std::string::npos) << kRetinas;
 #endif

@@ -61,12 +61,25 @@ io::DisplayFrame EyeSimulator::process(io::SceneFrame frame, const std::vector<G
     return *scene_field_made;
   };
   if (!glare_ || !adaptation_) scene_field();
-  const double scene_mean = scene_field_made
-                                ? scene_field_made->frame_mean()
-                                : retina::frame_mean_luminance(scene, plan_.dark_cd_m2, solid_angles_, solid_angle_sum_);
-  const double surround = plan_.surround_from_edge
-                              ? retina::edge_log_mean(scene, plan_.pixels_per_degree, plan_.dark_cd_m2)
-                              : plan_.surround_cd_m2;
+  // The frame's mean and its edge's mean (the surround) in one pass over
+  // it, with the glare stage's digest of it when that stage asks for one.
+  const double edge_band_px = plan_.surround_from_edge ? plan_.pixels_per_degree : 0.0;
+  retina::SceneMeans means;
+  std::optional<FrameDigest> scene_digest;
+  if (scene_field_made) {
+    means.mean = scene_field_made->frame_mean();
+    if (plan_.surround_from_edge) means.edge = retina::edge_log_mean(scene, edge_band_px, plan_.dark_cd_m2);
+  } else if (glare_ && glare_->wants_digest()) {
+    // The glare stage's digest of the frame, made in the same pass.
+    RowDigests rows(scene);
+    means = retina::scene_means(scene, plan_.dark_cd_m2, solid_angles_, solid_angle_sum_, edge_band_px,
+                                [&](int y) { rows.add_row(y); });
+    scene_digest = rows.digest();
+  } else {
+    means = retina::scene_means(scene, plan_.dark_cd_m2, solid_angles_, solid_angle_sum_, edge_band_px);
+  }
+  const double scene_mean = means.mean;
+  const double surround = plan_.surround_from_edge ? means.edge : plan_.surround_cd_m2;
   const double field_log = std::log10(std::max(scene_mean, plan_.dark_cd_m2));
   const auto pupil_target = [&](bool closed) {
     return glare::pupil_mm(plan_.glare.viewer, closed ? plan_.dark_log : field_log, plan_.frame_area_deg2());
@@ -87,7 +100,9 @@ io::DisplayFrame EyeSimulator::process(io::SceneFrame frame, const std::vector<G
     glare_->set_moment(frame.time_s, first.x, first.y);
   }
   cv::Mat retinal =
-      glare_ ? glare_->apply(scene, optics_log, surround, optics_pupil, &active.glare, &active.glare_reused) : scene;
+      glare_ ? glare_->apply(scene, optics_log, surround, optics_pupil, &active.glare, &active.glare_reused,
+                             scene_digest ? &*scene_digest : nullptr)
+             : scene;
   times.glare_ms = lap_ms(clock);
   // The later stages read the retinal image; only the report reads the
   // scene again. Let go of it (25 MB at 1080p) while they run.

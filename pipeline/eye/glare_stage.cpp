@@ -9,6 +9,7 @@
 #include "glare/veiling_luminance.hpp"
 #include "pipeline/eye/surround_row.hpp"
 #include "retina/enlarged_rows.hpp"
+#include "retina/halve_frame.hpp"
 #include "retina/luminance.hpp"
 #include "retina/vector_clones.hpp"
 
@@ -150,7 +151,8 @@ std::optional<double> GlareStage::veil_at(const cv::Mat& luminance, double adapt
 cv::Mat GlareStage::to_glare_frame(const cv::Mat& frame) const {
   if (halved_.empty() || frame.size() == halved_) return frame;
   cv::Mat out;
-  cv::resize(frame, out, halved_, 0, 0, cv::INTER_AREA);
+  retina::halve_frame(frame, out);
+  CV_Assert(out.size() == halved_);
   return out;
 }
 
@@ -283,7 +285,7 @@ cv::Mat GlareStage::with_wave_lines(const cv::Mat& light, const glare::PsfWeight
 }
 
 cv::Mat GlareStage::apply(const cv::Mat& rgb, double adaptation_log, double surround, double pupil_mm,
-                          bool* ran, bool* reused) {
+                          bool* ran, bool* reused, const FrameDigest* given) {
   if (reused) *reused = false;
   // The optics' inputs are quantised (1e-4 log10 units, 1e-3 mm: weight
   // changes below 1e-5), so a still frame reuses its glare until they move,
@@ -301,7 +303,7 @@ cv::Mat GlareStage::apply(const cv::Mat& rgb, double adaptation_log, double surr
       if (ran) *ran = false;
       return rgb;
     }
-    const FrameDigest digest = plan_.skip ? frame_digest(rgb) : FrameDigest();
+    const FrameDigest digest = plan_.skip ? (given ? *given : frame_digest(rgb)) : FrameDigest();
     if (plan_.skip && cache_.matches(digest, w, surround)) {
       if (ran) *ran = false;
       if (reused) *reused = true;

@@ -33,7 +33,12 @@ class GlareStage {
   // result once the frame has come twice in a row (Cache, below); *ran is
   // false then (and *reused true for the reuse).
   cv::Mat apply(const cv::Mat& rgb, double adaptation_log, double surround_cd_m2, double pupil_mm = 0.0,
-                bool* ran = nullptr, bool* reused = nullptr);
+                bool* ran = nullptr, bool* reused = nullptr, const FrameDigest* digest = nullptr);
+
+  // Whether apply() reads the frame's digest (full mode, skipping on).
+  // A caller that made it in a pass over the frame of its own passes it as
+  // `digest`; else apply() makes it.
+  bool wants_digest() const { return plan_.skip && plan_.glare.full; }
 
   // The frame's moment for the wave-optics lines (--flare-model wave): its
   // time and the gaze (frame pixels). Set before apply().

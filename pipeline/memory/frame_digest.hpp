@@ -3,10 +3,15 @@
 // it: the glare stage's still-scene cache held a whole frame (25 MB at
 // 1080p) to compare the next one with. Two different frames share a digest
 // with a chance of about 2^-128.
+//
+// Each row is digested on its own and the frame's digest is that of the
+// rows' digests in order: rows can be digested on any thread, or in a pass
+// that reads them for something else (RowDigests), and give the same.
 #pragma once
 
 #include <cstdint>
 #include <opencv2/core.hpp>
+#include <vector>
 
 namespace eyestream::pipeline {
 
@@ -18,8 +23,20 @@ struct FrameDigest {
   }
 };
 
-// The digest of `image`'s pixels row by row (padding between rows is not
-// read): the same for equal images whatever their strides.
+// The rows' digests of one image, filled a row at a time (each row once,
+// from any thread; padding between rows is not read).
+class RowDigests {
+ public:
+  explicit RowDigests(const cv::Mat& image);
+  void add_row(int y);
+  FrameDigest digest() const;  // once every row is added
+
+ private:
+  cv::Mat image_;
+  std::vector<std::uint64_t> rows_;  // two words a row
+};
+
+// The digest of `image`: the same for equal images whatever their strides.
 FrameDigest frame_digest(const cv::Mat& image);
 
 }  // namespace eyestream::pipeline

@@ -1,0 +1,39 @@
+#include "retina/halve_frame.hpp"
+
+#include <opencv2/imgproc.hpp>
+
+#include "retina/vector_clones.hpp"
+
+namespace eyestream::retina {
+
+namespace {
+
+// One output row of three-channel pixels from input rows a and b: each
+// value (a[x] + a[x + 3] + b[x] + b[x + 3]) / 4, OpenCV's terms in
+// OpenCV's order (its plain loop; its vector code, which one channel
+// takes, adds in pairs and leaves a tail that depends on its width).
+EYESTREAM_VECTOR_CLONES
+void halve_row(const float* a, const float* b, float* out, int pixels) {
+  for (int x = 0; x < pixels; ++x)
+    for (int c = 0; c < 3; ++c)
+      out[3 * x + c] = (a[6 * x + c] + a[6 * x + 3 + c] + b[6 * x + c] + b[6 * x + 3 + c]) * 0.25f;
+}
+
+}  // namespace
+
+void halve_frame(const cv::Mat& in, cv::Mat& out) {
+  const cv::Size half((in.cols + 1) / 2, (in.rows + 1) / 2);
+  const bool ours = in.type() == CV_32FC3 && in.cols % 2 == 0 && in.rows % 2 == 0;
+  if (!ours) {
+    cv::resize(in, out, half, 0, 0, cv::INTER_AREA);
+    return;
+  }
+  CV_Assert(out.data != in.data || out.empty());
+  out.create(half, in.type());
+  cv::parallel_for_(cv::Range(0, half.height), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y)
+      halve_row(in.ptr<float>(2 * y), in.ptr<float>(2 * y + 1), out.ptr<float>(y), half.width);
+  });
+}
+
+}  // namespace eyestream::retina

@@ -1,0 +1,38 @@
+// halve_frame (retina/halve_frame.hpp) against OpenCV's cv::resize with
+// INTER_AREA, bit for bit: three channels at even sizes (made here), odd
+// sizes and one channel (OpenCV's), a region of a larger image, and values
+// from 1e-9 to 1e9 cd/m^2 in one image.
+#include "retina/halve_frame.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <opencv2/imgproc.hpp>
+
+namespace eyestream::retina {
+namespace {
+
+TEST(HalveFrame, IsCvResizesAreaMeanBitForBit) {
+  cv::RNG random(3);
+  for (const int type : {CV_32FC3, CV_32FC1})
+    for (const cv::Size size :
+         {cv::Size(64, 36), cv::Size(194, 110), cv::Size(65, 37), cv::Size(64, 37), cv::Size(2, 2)}) {
+      cv::Mat big(size.height + 3, size.width + 5, type);
+      random.fill(big, cv::RNG::UNIFORM, 0.0, 1e5);
+      big.ptr<float>(1)[3] = 1e9f;
+      big.ptr<float>(1)[4] = 1e-9f;
+      big.ptr<float>(2)[3] = 0.0f;
+      const cv::Mat frame = big(cv::Rect(cv::Point(2, 1), size));  // rows with gaps between them
+      cv::Mat want, got;
+      cv::resize(frame, want, cv::Size((size.width + 1) / 2, (size.height + 1) / 2), 0, 0, cv::INTER_AREA);
+      halve_frame(frame, got);
+      ASSERT_EQ(got.size(), want.size()) << size;
+      ASSERT_EQ(got.type(), type);
+      EXPECT_EQ(cv::norm(got, want, cv::NORM_INF), 0.0) << size;
+      for (int y = 0; y < got.rows; ++y)
+        EXPECT_EQ(std::memcmp(got.ptr(y), want.ptr(y), size_t(got.cols) * got.elemSize()), 0) << size << " row " << y;
+    }
+}
+
+}  // namespace
+}  // namespace eyestream::retina
