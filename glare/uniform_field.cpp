@@ -13,7 +13,7 @@ bool is_uniform_field(const cv::Mat& rgb, double surround, double tolerance) {
   // a margin far above rounding), and the middle
   // row (a scene whose top rows are an even sky differs there sooner).
   const double spread = 1.0 + tolerance;
-  if (rgb.rows == 0 || rgb.cols == 0) return surround == 0.0;
+  if (rgb.rows == 0 || rgb.cols == 0) return surround == 0.0;  // (the empty range: lo = hi = 0)
   const cv::Vec3f first = rgb.at<cv::Vec3f>(0, 0);
   const double wide = spread * spread * spread;
   for (int c = 0; c < 3; ++c)
@@ -38,7 +38,7 @@ bool is_uniform_field(const cv::Mat& rgb, double surround, double tolerance) {
   // The surround is grey: every channel must match it too, or a coloured
   // field would take the surround's colour at its edges.
   for (int c = 0; c < 3; ++c)
-    if (surround < lo[c] / spread || surround > hi[c] * spread) return false;
+    if (!(surround >= lo[c] / spread && surround <= hi[c] * spread)) return false;  // a NaN surround too
   return true;
 }
 

@@ -11,7 +11,8 @@ namespace eyestream::glare {
 // `rgb` linear Rec.709 in cd/m^2 (finite). True when every channel's
 // largest value is at most (1 + tolerance) times its smallest and the
 // (grey) surround lies within every channel's range widened by the same
-// tolerance: a neutral field equal to its surround.
+// tolerance: a neutral field equal to its surround. A NaN pixel or
+// surround is never uniform; `tolerance` is finite and >= 0.
 bool is_uniform_field(const cv::Mat& rgb, double surround_cd_m2, double tolerance);
 
 }  // namespace eyestream::glare

@@ -49,8 +49,9 @@ void terms(const AfterimageTerms& k, const float* __restrict b, const float* __r
   }
 }
 
-// The largest |value| of n floats with no NaN: as integers, the magnitudes'
-// bits order as the magnitudes do.
+// The largest |value| of n floats, NaNs left out (as std::max leaves them
+// out when they come after its first value): as integers, the magnitudes'
+// bits order as the magnitudes do, and a NaN's are above infinity's.
 EYESTREAM_VECTOR_CLONES
 std::uint32_t largest_magnitude_bits(const float* __restrict v, int n) {
   std::uint32_t largest = 0;
@@ -58,6 +59,7 @@ std::uint32_t largest_magnitude_bits(const float* __restrict v, int n) {
     std::uint32_t bits;
     std::memcpy(&bits, &v[j], sizeof bits);
     bits &= 0x7fffffffu;
+    bits = bits > 0x7f800000u ? 0u : bits;
     largest = bits > largest ? bits : largest;
   }
   return largest;

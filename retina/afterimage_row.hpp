@@ -22,7 +22,8 @@ struct AfterimageTerms {
 // For `sites` sites (three floats each, L M S) of bleaching b, deficit d,
 // equilibrium b_inf, response r and one visibility each: the two terms
 // into gain and bleach (three floats a site; either may be null: not
-// written). Returns the largest |term|.
+// written). Returns the largest |term| (NaNs left out, as the scalar
+// loop's std::max leaves them out).
 float afterimage_row(const AfterimageTerms& k, const float* b, const float* d, const float* b_inf, const float* r,
                      const float* visible, float* gain, float* bleach, int sites);
 

@@ -24,7 +24,9 @@ void stimulus_and_ratio(const float* __restrict s, float sigma, float* __restric
     const float inverse = 1.0f / ratio;  // both made, then one chosen: a loop with a
                                          // division in a branch is not run as vectors
     intensity[j] = i;
-    ratio_or_inverse[j] = ratio <= 1.0f ? ratio : inverse;
+    // 0 for no stimulus (its response is 0 whatever the table says): the
+    // table is read only in [0, 1], whatever sigma is.
+    ratio_or_inverse[j] = i > 0.0f ? (ratio <= 1.0f ? ratio : inverse) : 0.0f;
   }
 }
 

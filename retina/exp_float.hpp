@@ -4,7 +4,8 @@
 // x = n ln 2 + r, |r| <= ln(2)/2, with ln 2 split in two parts, and
 // Moshier's degree-7 polynomial for e^r (the Cephes library's expf, 1989).
 // Relative error under 1.5e-7 (8.1e-8 seen) for x in [-87.3, 88] (tests/exp_float_test.cpp);
-// 0 below -87.3 (where e^x is under the least normal float), e^88 above 88.
+// 0 below -87.3 (where e^x is under the least normal float) and for NaN,
+// e^88 above 88.
 // For the retina's per-site exact decays, whose exponents are <= 0.
 #pragma once
 
@@ -14,7 +15,7 @@ namespace eyestream::retina {
 
 inline float exp_float(float x) {
   constexpr float kLeast = -87.33f;  // e^kLeast is just above the least normal float
-  const bool under = x < kLeast;
+  const bool under = !(x >= kLeast);  // and NaN: no float-to-int of a NaN below
   x = under ? kLeast : x;
   x = x > 88.0f ? 88.0f : x;
   // n = floor(x / ln 2 + 1/2), by truncation of a positive number.

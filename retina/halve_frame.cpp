@@ -9,14 +9,15 @@ namespace eyestream::retina {
 namespace {
 
 // One output row of three-channel pixels from input rows a and b: each
-// value (a[x] + a[x + 3] + b[x] + b[x + 3]) / 4, OpenCV's terms in
-// OpenCV's order (its plain loop; its vector code, which one channel
-// takes, adds in pairs and leaves a tail that depends on its width).
+// value (0 + (a[x] + a[x + 3] + b[x] + b[x + 3])) / 4, OpenCV's terms in
+// OpenCV's order (its plain loop, whose sum starts at +0: a block of -0
+// gives +0; its vector code, which one channel takes, adds in pairs and
+// leaves a tail that depends on its width).
 EYESTREAM_VECTOR_CLONES
 void halve_row(const float* a, const float* b, float* out, int pixels) {
   for (int x = 0; x < pixels; ++x)
     for (int c = 0; c < 3; ++c)
-      out[3 * x + c] = (a[6 * x + c] + a[6 * x + 3 + c] + b[6 * x + c] + b[6 * x + 3 + c]) * 0.25f;
+      out[3 * x + c] = (0.0f + (a[6 * x + c] + a[6 * x + 3 + c] + b[6 * x + c] + b[6 * x + 3 + c])) * 0.25f;
 }
 
 }  // namespace

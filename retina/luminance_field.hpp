@@ -57,9 +57,10 @@ double sum_of_weights(const cv::Mat& weights);
 // The geometric mean luminance (cd/m^2) of the band of width band_px along
 // the frame's edge (the whole frame when the band covers it): what the
 // world beyond the frame is taken to be. Geometric, so one bright light in
-// the band does not light the whole surround. Luminance below floor_cd_m2
-// (and non-finite) counts as floor_cd_m2, which must be positive. The logs
-// are log_sum.hpp's (within 1e-14 of the exact ones).
+// the band does not light the whole surround. Luminance below the floor
+// (and non-finite) counts as the floor, float(floor_cd_m2) as in the
+// field's floored luminance; floor_cd_m2 must be positive. The logs are
+// log_sum.hpp's (within a few units in the last place of the exact ones).
 double edge_log_mean(const cv::Mat& rgb, double band_px, double floor_cd_m2);
 
 // Both in one pass over the frame: the mean as frame_mean_luminance, and

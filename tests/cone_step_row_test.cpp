@@ -3,8 +3,10 @@
 // std::pow: stimuli from 0 (and non-finite or negative, which count as 0)
 // to 1e9 cd/m^2, states across [0, 1] and [0, C_max], a row whose length
 // is not a whole number of the function's blocks, and the same results
-// for a site wherever it sits in the row.
+// for a site wherever it sits in the row; and bit for bit the scalar float
+// step with exp_float in place of std::exp.
 #include "retina/cone_step_row.hpp"
+#include "retina/exp_float.hpp"
 
 #include <gtest/gtest.h>
 
@@ -59,6 +61,15 @@ TEST(ConeStepRow, IsTheModelsExactStepWithinFloatRounding) {
     EXPECT_NEAR(r[j], want_r, 1e-6 * want_r + 1e-12) << j;
     EXPECT_NEAR(b[j], want_b, 1e-6) << j;
     EXPECT_NEAR(d[j], want_d, 1e-6 * c_max) << j;
+    // And bit for bit the scalar float step with exp_float for std::exp.
+    const float fi = float(i), fb1 = k.bleach_rate[c], fb2 = k.regen_rate[c];
+    const float rate = fb1 * fi + fb2, f_rest = fb1 * fi / rate, f_r = curve.response(fi);
+    const float stepped = std::clamp((b0[j] - f_rest) * exp_float(-rate * k.dt) + f_rest, 0.0f, 1.0f);
+    const float settled = std::clamp((d0[j] - k.c_max * f_r) * k.calcium_decay + k.c_max * f_r, 0.0f, k.c_max);
+    ASSERT_EQ(rest[j], f_rest) << j;
+    ASSERT_EQ(r[j], f_r) << j;
+    ASSERT_EQ(b[j], stepped) << j;
+    ASSERT_EQ(d[j], settled) << j;
   }
   // A site's results do not depend on where it sits: the row shifted by
   // one block and a part gives the same bytes.
@@ -67,10 +78,20 @@ TEST(ConeStepRow, IsTheModelsExactStepWithinFloatRounding) {
       d2(d0.begin() + 3 * shift, d0.end()), rest2(s2.size()), r2(s2.size());
   step_cone_row(k, s2.data(), rest2.data(), r2.data(), b2.data(), d2.data(), sites - shift);
   for (size_t j = 0; j < s2.size(); ++j) {
+    EXPECT_EQ(rest2[j], rest[j + 3 * shift]) << j;
     EXPECT_EQ(b2[j], b[j + 3 * shift]) << j;
     EXPECT_EQ(d2[j], d[j + 3 * shift]) << j;
     EXPECT_EQ(r2[j], r[j + 3 * shift]) << j;
   }
+  // No stimulus responds 0 and reads the power table only in [0, 1],
+  // whatever sigma is (here 0, which no tone curve has).
+  k.sigma = 0.0f;
+  const float dark[3] = {0.0f, -1.0f, NAN}, lit[3] = {1.0f, 2.0f, 3.0f};
+  float one_rest[3], one_r[3], one_b[3] = {0.5f, 0.5f, 0.5f}, one_d[3] = {0.5f, 0.5f, 0.5f};
+  step_cone_row(k, dark, one_rest, one_r, one_b, one_d, 1);
+  for (float v : one_r) EXPECT_EQ(v, 0.0f);
+  step_cone_row(k, lit, one_rest, one_r, one_b, one_d, 1);
+  for (float v : one_r) EXPECT_EQ(v, 1.0f) << "sigma 0: every stimulus is far above it";
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // glare::is_uniform_field against its definition written out here (every
 // channel's range within the tolerance, the grey surround within every
 // widened range), on fields that differ from uniform in one pixel at
-// different places, or in the surround alone, or in nothing.
+// different places, or in the surround alone, or in nothing; a NaN pixel
+// or surround is never uniform.
 #include "glare/uniform_field.hpp"
 
 #include <gtest/gtest.h>
@@ -24,7 +25,7 @@ bool by_definition(const cv::Mat& rgb, double surround, double tolerance) {
         lo = std::min(lo, v);
         hi = std::max(hi, v);
       }
-    if (hi > spread * lo || surround < lo / spread || surround > hi * spread) return false;
+    if (hi > spread * lo || !(surround >= lo / spread && surround <= hi * spread)) return false;
   }
   return true;
 }
@@ -60,6 +61,7 @@ TEST(UniformField, AgreesWithItsDefinitionWhereverTheFieldDiffers) {
   with_nan.at<cv::Vec3f>(4, 4)[1] = NAN;
   EXPECT_FALSE(is_uniform_field(with_nan, 1.0, tolerance));
   EXPECT_TRUE(is_uniform_field(cv::Mat(0, 0, CV_32FC3), 0.0, tolerance));
+  EXPECT_FALSE(is_uniform_field(cv::Mat(5, 5, CV_32FC3, cv::Scalar::all(1.0)), NAN, tolerance)) << "a NaN surround";
 }
 
 }  // namespace

@@ -303,6 +303,7 @@ cv::Mat GlareStage::apply(const cv::Mat& rgb, double adaptation_log, double surr
       if (ran) *ran = false;
       return rgb;
     }
+    CV_Assert(!given || (given->rows == rgb.rows && given->cols == rgb.cols && given->type == rgb.type()));
     const FrameDigest digest = plan_.skip ? (given ? *given : frame_digest(rgb)) : FrameDigest();
     if (plan_.skip && cache_.matches(digest, w, surround)) {
       if (ran) *ran = false;
