@@ -42,7 +42,8 @@ class RetinaState {
   void rest(const cv::Mat& lms, const ToneCurve& curve);
 
   // Advances every site by dt_s seconds at the constant stimulus `lms`,
-  // exactly (Jacobs et al. 2015 eqs. 5 and 9). Non-finite or negative stimuli count as
+  // exactly (Jacobs et al. 2015 eqs. 5 and 9; in float with e^x to 1.5e-7,
+  // cone_step_row.hpp). Non-finite or negative stimuli count as
   // 0. Afterwards 0 <= B <= 1 and 0 <= D <= C_max. Remembers the stimulus's
   // equilibrium and responses for soften() and afterimages().
   void step(const cv::Mat& lms, const ToneCurve& curve, double dt_s);

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "io/exr_file.hpp"
+#include "retina/bit_masks.hpp"
 #include "tests/test_support.hpp"
 
 namespace eyestream::io {
@@ -42,10 +43,10 @@ struct Plane {
 Plane random_plane(Imf::PixelType type, size_t n, std::mt19937& random) {
   Plane p;
   p.type = type;
-  std::uniform_int_distribution<int> bits(0, 65535);
+  std::uniform_int_distribution<int> bits_of(0, 65535);
   for (size_t i = 0; i < n; ++i) {
     Imath::half h;
-    h.setBits(std::uint16_t(bits(random)));
+    h.setBits(std::uint16_t(bits_of(random)));
     if (type == Imf::HALF)
       p.halves.push_back(h.bits());
     else
@@ -77,11 +78,7 @@ void write_file(const std::string& path, const Imath::Box2i& window, const std::
   }
 }
 
-std::uint32_t bits(float v) {
-  std::uint32_t b;
-  std::memcpy(&b, &v, sizeof b);
-  return b;
-}
+using retina::bits_of;
 
 // Reads the file and checks every pixel's three values against the
 // planes: red, green, blue (or the one grey plane in all three).
@@ -94,7 +91,8 @@ void expect_read(const std::string& path, const std::string& layer, const std::v
       for (int c = 0; c < 3; ++c) {
         const size_t i = size_t(y) * size_t(width) + size_t(x);
         const float want = rgb[rgb.size() == 1 ? 0 : size_t(c)]->value(i);
-        ASSERT_EQ(bits(image.rgb.at<cv::Vec3f>(y, x)[c]), bits(want)) << path << " x " << x << " y " << y << " c " << c;
+        ASSERT_EQ(bits_of(image.rgb.at<cv::Vec3f>(y, x)[c]), bits_of(want))
+            << path << " x " << x << " y " << y << " c " << c;
       }
 }
 

@@ -11,14 +11,12 @@
 #include <cstring>
 #include <vector>
 
+#include "retina/bit_masks.hpp"
+
 namespace eyestream::io {
 namespace {
 
-std::uint32_t bits(float v) {
-  std::uint32_t b;
-  std::memcpy(&b, &v, sizeof b);
-  return b;
-}
+using retina::bits_of;
 
 TEST(HalfRows, EveryHalfIsImathsFloatBitForBit) {
   const int n = 65536 + 7;
@@ -40,8 +38,8 @@ TEST(HalfRows, EveryHalfIsImathsFloatBitForBit) {
   for (int i = 0; i < n; ++i) {
     const std::uint16_t h[3] = {red[size_t(i)], green[size_t(i)], blue[size_t(i)]};
     for (int c = 0; c < 3; ++c) {
-      wrong += bits(rgb[3 * size_t(i) + size_t(c)]) != bits(imath(h[c]));
-      wrong += bits(grey[3 * size_t(i) + size_t(c)]) != bits(imath(h[0]));
+      wrong += bits_of(rgb[3 * size_t(i) + size_t(c)]) != bits_of(imath(h[c]));
+      wrong += bits_of(grey[3 * size_t(i) + size_t(c)]) != bits_of(imath(h[0]));
     }
     if (wrong > 0) {
       ADD_FAILURE() << "half 0x" << std::hex << h[0] << " / 0x" << h[1] << " / 0x" << h[2];
