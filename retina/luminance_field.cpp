@@ -111,10 +111,6 @@ SceneMeans scene_means(const cv::Mat& rgb, double floor_cd_m2, const cv::Mat& we
   return means;
 }
 
-double frame_mean_luminance(const cv::Mat& rgb, double floor_cd_m2, const cv::Mat& weights, double weight_total) {
-  return scene_means(rgb, floor_cd_m2, weights, weight_total, 0.0).mean;
-}
-
 double edge_log_mean(const cv::Mat& rgb, double band_px, double floor_cd_m2) {
   return scene_means(rgb, floor_cd_m2, cv::Mat(), 0.0, std::max(band_px, 0.5)).edge;
 }

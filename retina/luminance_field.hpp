@@ -47,11 +47,7 @@ class LuminanceField {
   mutable double mean_ = -1.0;  // < 0: not made yet
 };
 
-// The value LuminanceField(rgb, floor_cd_m2, weights).frame_mean() has,
-// bit for bit, in one pass that keeps no luminance map: the pupil's field
-// on a frame whose own field is not otherwise read. `weight_total` is
-// sum_of_weights(weights) (unused when `weights` is empty).
-double frame_mean_luminance(const cv::Mat& rgb, double floor_cd_m2, const cv::Mat& weights, double weight_total);
+// The total of `weights` (0 when empty), for scene_means.
 double sum_of_weights(const cv::Mat& weights);
 
 // The geometric mean luminance (cd/m^2) of the band of width band_px along
@@ -63,9 +59,12 @@ double sum_of_weights(const cv::Mat& weights);
 // log_sum.hpp's (within a few units in the last place of the exact ones).
 double edge_log_mean(const cv::Mat& rgb, double band_px, double floor_cd_m2);
 
-// Both in one pass over the frame: the mean as frame_mean_luminance, and
-// the edge's geometric mean as edge_log_mean when band_px > 0 (else edge
-// is 0). also_per_row(y), when given, is called once for each row, on the
+// In one pass that keeps no luminance map: the mean, the value
+// LuminanceField(rgb, floor_cd_m2, weights).frame_mean() has, bit for bit
+// (the pupil's field on a frame whose own field is not otherwise read;
+// `weight_total` is sum_of_weights(weights), unused when `weights` is
+// empty), and the edge's geometric mean as edge_log_mean when band_px > 0
+// (else edge is 0). also_per_row(y), when given, is called once for each row, on the
 // pass's threads, right after the row is read: for another digest of the
 // frame while its row is in cache (the glare stage's frame digest).
 struct SceneMeans {

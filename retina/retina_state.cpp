@@ -44,22 +44,22 @@ void equilibrium(const cv::Mat& lms, const ToneCurve& curve, const Photoreceptor
   });
 }
 
-// One time step of every site, with the equilibrium it relaxes toward
+// One time step of every site in double (reference precision; float
+// steps by step_sites_float), with the equilibrium it relaxes toward
 // (b_inf, response) written on the way: one sweep.
-template <typename T>
 void step_sites(const cv::Mat& lms, const ToneCurve& curve, const PhotoreceptorParams& p, double c_max, double dt,
                 cv::Mat& b_inf, cv::Mat& response, cv::Mat& bleached, cv::Mat& deficit) {
   b_inf.create(lms.size(), lms.type());
   response.create(lms.size(), lms.type());
-  const T decay = std::exp(-T(p.calcium_efflux_per_s) * T(dt));
+  const double decay = std::exp(-p.calcium_efflux_per_s * dt);
   cv::parallel_for_(cv::Range(0, lms.rows), [&](const cv::Range& rows) {
     for (int y = rows.start; y < rows.end; ++y) {
-      const Px<T>* s = lms.ptr<Px<T>>(y);
-      Px<T>* rest = b_inf.ptr<Px<T>>(y);
-      Px<T>* r = response.ptr<Px<T>>(y);
-      Px<T>* b = bleached.ptr<Px<T>>(y);
-      Px<T>* d = deficit.ptr<Px<T>>(y);
-      Px<T> b_in, d_in;  // the state the last computed site started from
+      const Px<double>* s = lms.ptr<Px<double>>(y);
+      Px<double>* rest = b_inf.ptr<Px<double>>(y);
+      Px<double>* r = response.ptr<Px<double>>(y);
+      Px<double>* b = bleached.ptr<Px<double>>(y);
+      Px<double>* d = deficit.ptr<Px<double>>(y);
+      Px<double> b_in, d_in;  // the state the last computed site started from
       for (int x = 0; x < lms.cols; ++x) {
         // A site with the stimulus and state of the one before it (the
         // uniform surround most of the grid sees) takes its results: the
@@ -74,14 +74,14 @@ void step_sites(const cv::Mat& lms, const ToneCurve& curve, const PhotoreceptorP
         b_in = b[x];
         d_in = d[x];
         for (int c = 0; c < 3; ++c) {
-          const T i = stimulus(s[x][c]);
+          const double i = stimulus(s[x][c]);
           // Jacobs et al. 2015 eqs. 6 and 1.
-          rest[x][c] = bleach_equilibrium<T>(i, T(p.bleach_rate[c]), T(p.regen_rate_per_s[c]));
-          r[x][c] = T(curve.response(float(i)));
+          rest[x][c] = bleach_equilibrium<double>(i, p.bleach_rate[c], p.regen_rate_per_s[c]);
+          r[x][c] = double(curve.response(float(i)));
           b[x][c] =
-              std::clamp(bleach_step<T>(b[x][c], i, T(dt), T(p.bleach_rate[c]), T(p.regen_rate_per_s[c])), T(0), T(1));
-          const T d_inf = T(c_max) * r[x][c];  // Jacobs et al. 2015 eq. 10 as a deficit
-          d[x][c] = std::clamp((d[x][c] - d_inf) * decay + d_inf, T(0), T(c_max));  // Jacobs et al. 2015 eq. 9
+              std::clamp(bleach_step<double>(b[x][c], i, dt, p.bleach_rate[c], p.regen_rate_per_s[c]), 0.0, 1.0);
+          const double d_inf = c_max * r[x][c];  // Jacobs et al. 2015 eq. 10 as a deficit
+          d[x][c] = std::clamp((d[x][c] - d_inf) * decay + d_inf, 0.0, c_max);  // Jacobs et al. 2015 eq. 9
         }
       }
     }
@@ -111,7 +111,6 @@ void step_sites_float(const cv::Mat& lms, const ToneCurve& curve, const Photorec
   });
 }
 
-template <typename T>
 void afterimage_sites(const PhotoreceptorParams& p, double c_max, const AfterimageOptions& o, const cv::Mat& bleached,
                       const cv::Mat& deficit, const cv::Mat& bleached_rest, const cv::Mat& response,
                       const cv::Mat& visibility, AfterimageMaps& maps, bool with_maps) {
@@ -126,10 +125,10 @@ void afterimage_sites(const PhotoreceptorParams& p, double c_max, const Afterima
   cv::parallel_for_(cv::Range(0, bleached.rows), [&](const cv::Range& rows) {
     for (int y = rows.start; y < rows.end; ++y) {
       float largest = 0.0f;
-      const Px<T>* b = bleached.ptr<Px<T>>(y);
-      const Px<T>* d = deficit.ptr<Px<T>>(y);
-      const Px<T>* b_inf = bleached_rest.ptr<Px<T>>(y);
-      const Px<T>* r = response.ptr<Px<T>>(y);
+      const Px<double>* b = bleached.ptr<Px<double>>(y);
+      const Px<double>* d = deficit.ptr<Px<double>>(y);
+      const Px<double>* b_inf = bleached_rest.ptr<Px<double>>(y);
+      const Px<double>* r = response.ptr<Px<double>>(y);
       const float* visible = visibility.ptr<float>(y);
       cv::Vec3f* gain = with_maps ? maps.gain_excess.ptr<cv::Vec3f>(y) : nullptr;
       cv::Vec3f* bleach = with_maps ? maps.bleach.ptr<cv::Vec3f>(y) : nullptr;
@@ -137,7 +136,7 @@ void afterimage_sites(const PhotoreceptorParams& p, double c_max, const Afterima
         for (int c = 0; c < 3; ++c) {
           double g = 1.0, j = 0.0;
           if (o.local_adaptation)  // Jacobs et al. 2015 eqs. 11-12: alpha^j2
-            g = power.any(float(local_gain<T>(d[x][c], r[x][c], T(c_max), T(p.gain_epsilon))));
+            g = power.any(float(local_gain<double>(d[x][c], r[x][c], c_max, p.gain_epsilon)));
           if (o.bleaching)  // Jacobs et al. 2015 eq. 12: j1 (C / C_max) max(B - B_inf, 0)
             j = p.bleaching_strength * (1.0 - double(d[x][c]) / c_max) * std::max(double(b[x][c] - b_inf[x][c]), 0.0);
           const float gain_xc = float(visible[x] * (g - 1.0)), bleach_xc = float(visible[x] * j);
@@ -212,7 +211,7 @@ void RetinaState::step(const cv::Mat& lms, const ToneCurve& curve, double dt_s) 
     return;
   }
   if (is_double(lms))
-    step_sites<double>(lms, curve, params_, c_max_, dt_s, bleached_rest_, response_, bleached_, deficit_);
+    step_sites(lms, curve, params_, c_max_, dt_s, bleached_rest_, response_, bleached_, deficit_);
   else
     step_sites_float(lms, curve, params_, c_max_, dt_s, bleached_rest_, response_, bleached_, deficit_);
 }
@@ -262,7 +261,7 @@ AfterimageMaps RetinaState::afterimage_terms(const AfterimageOptions& options, c
   CV_Assert(!region.empty() && (region & grid) == region);
   AfterimageMaps maps;
   if (is_double(bleached_))
-    afterimage_sites<double>(params_, c_max_, options, bleached_(region), deficit_(region), bleached_rest_(region),
+    afterimage_sites(params_, c_max_, options, bleached_(region), deficit_(region), bleached_rest_(region),
                              response_(region), visibility(region), maps, with_maps);
   else
     afterimage_sites_float(params_, c_max_, options, bleached_(region), deficit_(region), bleached_rest_(region),

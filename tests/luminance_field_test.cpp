@@ -78,13 +78,16 @@ TEST(FrameMeanLuminance, IsTheFieldsMeanBitForBitWithAndWithoutWeights) {
       weighted += v * weights.at<float>(y, x);
       total_weight += weights.at<float>(y, x);
     }
-  const double plain = frame_mean_luminance(rgb, floor, cv::Mat(), 0.0);
-  const double with_weights = frame_mean_luminance(rgb, floor, weights, sum_of_weights(weights));
+  const double plain = scene_means(rgb, floor, cv::Mat(), 0.0, 0.0).mean;
+  const double with_weights = scene_means(rgb, floor, weights, sum_of_weights(weights), 0.0).mean;
   EXPECT_EQ(plain, LuminanceField(rgb, floor).frame_mean());
   EXPECT_EQ(with_weights, LuminanceField(rgb, floor, weights).frame_mean());
   EXPECT_NEAR(plain, double(sum / (37 * 53)), 1e-9 * plain);
   EXPECT_NEAR(with_weights, double(weighted / total_weight), 1e-9 * with_weights);
   EXPECT_NE(plain, with_weights);
+  // The same with the edge's logs and a per-row callback in the pass, as
+  // the eye runs it.
+  EXPECT_EQ(scene_means(rgb, floor, weights, sum_of_weights(weights), 4.0, [](int) {}).mean, with_weights);
 }
 
 }  // namespace
