@@ -8,16 +8,26 @@
 
 namespace eyestream::retina {
 
-PowTable::PowTable(double exponent) : exponent_(exponent), table_(size_t(kOctaves) * kSteps + 2) {
-  for (size_t i = 0; i < table_.size(); ++i) {
+PowTable::PowTable(double exponent) : exponent_(exponent), entries_(size_t(kOctaves) * kSteps + 1) {
+  // Points up to x = 1 (the last entry's own point, read with a zero fraction) and one beyond.
+  std::vector<float> points(entries_.size() + 1);
+  for (size_t i = 0; i < points.size(); ++i) {
     const double x = std::ldexp(1.0 + double(i % kSteps) / kSteps, int(i / kSteps) - kOctaves);
-    table_[i] = float(std::pow(x, exponent));
+    points[i] = float(std::pow(x, exponent));
   }
+  for (size_t i = 0; i < entries_.size(); ++i) entries_[i] = entry(points[i], points[i + 1] - points[i]);
+}
+
+std::uint64_t PowTable::entry(float at, float step) {
+  std::uint32_t lo, hi;
+  std::memcpy(&lo, &at, sizeof lo);
+  std::memcpy(&hi, &step, sizeof hi);
+  return lo | std::uint64_t(hi) << 32;
 }
 
 EYESTREAM_VECTOR_CLONES
 void PowTable::batch(const float* __restrict x, float* __restrict y, int n) const {
-  const float* __restrict t = table_.data();
+  const std::uint64_t* __restrict t = entries_.data();
   int below = 0;  // values under the table's least octave, other than 0
   for (int i = 0; i < n; ++i) {
     std::uint32_t bits;
@@ -27,7 +37,9 @@ void PowTable::batch(const float* __restrict x, float* __restrict y, int n) cons
     const int under = octave < 0;
     const int at = octave * (1 - under) * kSteps + int((bits >> 13) & (kSteps - 1));
     const float f = float(int(bits & 8191u)) * (1.0f / 8192.0f);
-    const float v = t[at] + f * (t[at + 1] - t[at]);
+    float point, step;
+    split(t[at], point, step);
+    const float v = point + f * step;
     y[i] = v * float(1 - under);  // (v is finite: 0 under the table)
     below |= under & int(bits != 0);
   }

@@ -26,12 +26,15 @@ class PowTable {
     if (octave < 0) return x > 0.0f ? float(std::pow(double(x), exponent_)) : 0.0f;
     const std::uint32_t i = std::uint32_t(octave) * kSteps + ((bits >> 13) & (kSteps - 1));
     const float f = float(bits & 8191u) * (1.0f / 8192.0f);
-    return table_[i] + f * (table_[i + 1] - table_[i]);
+    float at, step;
+    split(entries_[i], at, step);
+    return at + f * step;
   }
 
   // y[i] = x[i]^p for n values in [0, 1], exactly as operator() gives
   // them: a row at a call, compiled for AVX-512 and AVX2 beside the baseline
-  // (vector_clones.hpp), the table read by vector gathers. x and y must not
+  // (vector_clones.hpp), the table read by vector gathers (one 64-bit
+  // gather per value: a point and its step to the next). x and y must not
   // overlap.
   void batch(const float* x, float* y, int n) const;
 
@@ -40,8 +43,17 @@ class PowTable {
 
  private:
   static constexpr int kOctaves = 40, kSteps = 1024;
+  // Each point's value and its step to the next point (the float
+  // difference, as the interpolation would take it), in one 64-bit entry.
+  static std::uint64_t entry(float at, float step);
+  static void split(std::uint64_t e, float& at, float& step) {
+    const std::uint32_t lo = std::uint32_t(e), hi = std::uint32_t(e >> 32);
+    std::memcpy(&at, &lo, sizeof at);
+    std::memcpy(&step, &hi, sizeof step);
+  }
+
   double exponent_;
-  std::vector<float> table_;
+  std::vector<std::uint64_t> entries_;
 };
 
 // The table for `exponent`, built on first use and kept for the run (a run
