@@ -16,7 +16,7 @@ namespace eyestream::retina {
 struct BilinearAxis {
   std::vector<int> lo, hi;
   std::vector<float> w;  // the weight of hi
-  RepeatingTaps repeating;
+  RepeatingTaps repeating;  // of lo, hi and w as made here: to be found again if they are changed
 
   // `full` pixels reading a map of `reduced` pixels at `scale` map pixels
   // per full pixel.

@@ -7,8 +7,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
+#include <string>
+#include <tuple>
 #include <vector>
 
 #include "retina/bilinear_axis.hpp"
@@ -40,15 +43,23 @@ std::vector<float> by_definition(const std::vector<float>& row, const BilinearAx
   return out;
 }
 
+// Row and output held between guards: the row's read as NaN if touched, the
+// output's checked untouched, as are its values from n on.
+constexpr size_t kGuard = 16;
+
 void expect_definition(const BilinearAxis& a, int reduced, int n, const std::string& what) {
   for (int channels : {1, 3}) {
-    const std::vector<float> row = random_row(reduced, channels, unsigned(n * 7 + reduced));
-    std::vector<float> out(a.lo.size() * size_t(channels), -1.0f);  // the whole axis; n of it written
-    (channels == 1 ? enlarge_row : enlarge_row3)(row.data(), a, out.data(), n);
-    const std::vector<float> expected = by_definition(row, a, channels, n);
-    for (size_t i = 0; i < out.size(); ++i)
-      ASSERT_EQ(bits_of(out[i]), bits_of(i < expected.size() ? expected[i] : -1.0f))
-          << what << ", " << channels << " channels, value " << i << ": " << out[i];
+    const std::vector<float> values = random_row(reduced, channels, unsigned(n * 7 + reduced));
+    std::vector<float> row(values.size() + 2 * kGuard, std::nanf(""));
+    std::copy(values.begin(), values.end(), row.begin() + kGuard);
+    std::vector<float> out(a.lo.size() * size_t(channels) + 2 * kGuard, -1.0f);
+    (channels == 1 ? enlarge_row : enlarge_row3)(row.data() + kGuard, a, out.data() + kGuard, n);
+    const std::vector<float> expected = by_definition(values, a, channels, n);
+    for (size_t i = 0; i < out.size(); ++i) {
+      const bool written = i >= kGuard && i - kGuard < expected.size();
+      ASSERT_EQ(bits_of(out[i]), bits_of(written ? expected[i - kGuard] : -1.0f))
+          << what << ", " << channels << " channels, value " << long(i) - long(kGuard) << " of " << n * channels;
+    }
   }
 }
 
@@ -62,6 +73,24 @@ TEST(BilinearRows, WideningIsTheTapsDefinitionBitForBit) {
     expect_definition(a, reduced, full, what);
     expect_definition(a, reduced, full / 2, what + ", the first half");
   }
+}
+
+// As the acuity loss reads its levels: a scale of 1 / f whatever the sizes,
+// so that a map of odd size stops the stretch short of a clamped tail.
+TEST(BilinearRows, AWholeScaleOnSizesItDoesNotDivideIsTheDefinitionAtEveryLength) {
+  for (const auto& [full, reduced, f] :
+       {std::tuple{1925, 241, 8}, std::tuple{1925, 240, 8}, std::tuple{1081, 541, 2}, std::tuple{8, 4, 2},
+        std::tuple{16, 2, 8}, std::tuple{64, 17, 4}, std::tuple{64, 32, 2}, std::tuple{64, 8, 8}}) {
+    const BilinearAxis a(full, reduced, 1.0f / float(f));
+    const std::string what = std::to_string(reduced) + " to " + std::to_string(full) + " at 1/" + std::to_string(f);
+    if (full <= 64)
+      for (int n = 0; n <= full; ++n) expect_definition(a, reduced, n, what + ", " + std::to_string(n) + " pixels");
+    else
+      expect_definition(a, reduced, full, what);
+  }
+  EXPECT_EQ(BilinearAxis(8, 4, 0.5f).repeating.blocks, 2);  // the second reads the map's last pixel
+  EXPECT_EQ(BilinearAxis(16, 2, 0.125f).repeating.blocks, 0);
+  EXPECT_GT(BilinearAxis(1925, 241, 0.125f).repeating.blocks, 230);
 }
 
 TEST(BilinearRows, WholeFactorsRepeatOverAllButTheirBordersAndOthersNeedNot) {
