@@ -11,6 +11,7 @@ RetinalGrid::RetinalGrid(int frame_width, int frame_height, double sites_per_pix
   size_ = cv::Size(int(std::ceil(2.0 * frame_width * scale_)) + 3, int(std::ceil(2.0 * frame_height * scale_)) + 3);
   centre_x_ = (size_.width - 1) / 2.0;
   centre_y_ = (size_.height - 1) / 2.0;
+  if (scale_ < 1.0) reduction_ = std::make_shared<const AreaReduction>(cv::Size(frame_width, frame_height), reduced_size());
 }
 
 cv::Size RetinalGrid::reduced_size() const {
@@ -22,7 +23,7 @@ cv::Mat RetinalGrid::reduce(const cv::Mat& scene) const {
   CV_Assert(scene.cols == frame_width_ && scene.rows == frame_height_);
   if (scale_ >= 1.0) return scene;
   cv::Mat source;
-  cv::resize(scene, source, reduced_size(), 0, 0, cv::INTER_AREA);
+  reduction_->apply(scene, source);
   return source;
 }
 

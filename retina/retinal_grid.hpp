@@ -5,7 +5,10 @@
 // afterimage neither blurs nor drifts as the gaze moves.
 #pragma once
 
+#include <memory>
 #include <opencv2/core.hpp>
+
+#include "retina/area_reduction.hpp"
 
 namespace eyestream::retina {
 
@@ -55,6 +58,7 @@ class RetinalGrid {
   double scale_;
   cv::Size size_;
   double centre_x_, centre_y_;  // fovea, in site coordinates
+  std::shared_ptr<const AreaReduction> reduction_;  // the frame to reduced_size(), if smaller
 };
 
 }  // namespace eyestream::retina

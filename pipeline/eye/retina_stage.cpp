@@ -89,7 +89,11 @@ RetinaStage::RetinaStage(const Plan& plan)
       grid_(int(std::ceil(plan.projection->retina_reach().width)), int(std::ceil(plan.projection->retina_reach().height)),
             plan.retina.sites_per_pixel),
       state_(grid_.size(), plan.retina.receptors, plan.retina.double_precision),
-      visibility_(grid_.foveal_falloff(plan.retina.fovea_sigma_px)) {}
+      visibility_(grid_.foveal_falloff(plan.retina.fovea_sigma_px)) {
+  const cv::Size frame(plan.width, plan.height);
+  if (reduced_frame_size(frame) != frame)
+    reduction_ = std::make_shared<const retina::AreaReduction>(frame, reduced_frame_size(frame));
+}
 
 cv::Mat RetinaStage::dark_stimulus() const {
   // A closed eye after a closed eye sees what it saw: the last stimulus,
@@ -185,7 +189,10 @@ cv::Mat RetinaStage::reduce_frame(const cv::Mat& frame) const {
   const cv::Size size = reduced_frame_size(frame.size());
   if (size == frame.size()) return frame;
   cv::Mat out;
-  cv::resize(frame, out, size, 0, 0, cv::INTER_AREA);
+  if (reduction_ && reduction_->from() == frame.size())
+    reduction_->apply(frame, out);
+  else
+    cv::resize(frame, out, size, 0, 0, cv::INTER_AREA);
   return out;
 }
 

@@ -3,6 +3,7 @@
 // and the afterimages it adds to the display (Jacobs et al. 2015 sec. 2.2).
 #pragma once
 
+#include <memory>
 #include <opencv2/core.hpp>
 #include <optional>
 #include <string>
@@ -12,6 +13,7 @@
 #include "pipeline/eye/gaze_timeline.hpp"
 #include "pipeline/memory/frame_digest.hpp"
 #include "pipeline/settings/plan.hpp"
+#include "retina/area_reduction.hpp"
 #include "retina/retina_state.hpp"
 #include "retina/retinal_grid.hpp"
 
@@ -82,6 +84,7 @@ class RetinaStage {
   bool draw_ = false;
   cv::Size reduced_frame_size(cv::Size frame) const;
   cv::Mat reduce_frame(const cv::Mat& frame) const;
+  std::shared_ptr<const retina::AreaReduction> reduction_;  // the plan's frame to reduced_frame_size(), if smaller
   // The grid's stimulus for the gaze at plane point (plane_x, plane_y).
   cv::Mat sample(const cv::Mat& reduced, double plane_x, double plane_y, const cv::Scalar& surround) const;
 

@@ -1,0 +1,160 @@
+#include "retina/area_reduction.hpp"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <cstring>
+#include <opencv2/imgproc.hpp>
+
+#include "retina/vector_clones.hpp"
+
+namespace eyestream::retina {
+
+namespace {
+
+// The reduction cv::resize works with for `from` to `to` pixels: the
+// reciprocal of its output-to-input ratio, as it computes it.
+double input_per_output(int from, int to) { return 1.0 / (double(to) / double(from)); }
+
+// Whether cv::resize takes its whole-factor path for this axis.
+bool whole(double scale) { return std::abs(scale - double(cvRound(scale))) < DBL_EPSILON; }
+
+// A pixel's three channels and an unused fourth as one vector (GCC's and
+// Clang's vector extension: SSE on x86-64, NEON on AArch64): each tap is
+// one multiply and one add for all three. Loaded from any float.
+typedef float Rgbx __attribute__((vector_size(16)));
+typedef float LooseRgbx __attribute__((vector_size(16), aligned(4)));
+
+inline Rgbx three_floats(const float* p) {
+  Rgbx v = {0, 0, 0, 0};
+  std::memcpy(&v, p, 3 * sizeof(float));
+  return v;
+}
+
+// Output pixel d's sums: 0 + input pixel first[d] w_0 + the next one's
+// w_1 + ..., left to right, each channel alone (the fourth lane is never
+// stored). `pixels` lists the output pixels to make; every one has `taps`
+// taps, so the tap loop's branch is the same for all of them. Unless
+// `last`, none reads the row's last input pixel, so each tap loads four
+// floats; with it, three.
+template <bool last>
+void row_sums(const float* __restrict in, const int* __restrict first, const float* __restrict weight,
+              const int* pixels, size_t count, int taps, size_t stride, float* __restrict out) {
+  for (size_t k = 0; k < count; ++k) {
+    const int d = pixels[k];
+    const float* p = in + 3 * size_t(first[d]);
+    const float* w = weight + size_t(d) * stride;
+    Rgbx sum = {0, 0, 0, 0};
+    for (int t = 0; t < taps; ++t)
+      sum = sum + (last ? three_floats(p + 3 * t) : Rgbx(*reinterpret_cast<const LooseRgbx*>(p + 3 * t))) * w[t];
+    std::memcpy(out + 3 * size_t(d), &sum, 3 * sizeof(float));
+  }
+}
+
+EYESTREAM_VECTOR_CLONES
+void first_row_term(const float* __restrict sums, float weight, float* __restrict out, int n) {
+  for (int v = 0; v < n; ++v) out[v] = weight * sums[v];
+}
+
+EYESTREAM_VECTOR_CLONES
+void add_row_term(const float* __restrict sums, float weight, float* __restrict out, int n) {
+  for (int v = 0; v < n; ++v) out[v] = out[v] + weight * sums[v];
+}
+
+}  // namespace
+
+// cv::resize's area taps (OpenCV's imgproc/resize.cpp, computeResizeAreaTab):
+// output pixel d covers input [d s, d s + s), s the reduction; a partly
+// covered input pixel at either end weighs its covered share, each whole
+// one 1, all over the covered width (shorter at the input's end). Shares
+// below 1e-3 of a pixel are dropped.
+AreaReduction::Axis::Axis(int from, int to) {
+  const double scale = input_per_output(from, to);
+  for (int d = 0; d < to; ++d) {
+    const double x1 = d * scale, x2 = x1 + scale;
+    const double width = std::min(scale, from - x1);
+    int s2 = std::min(int(std::floor(x2)), from - 1);
+    const int s1 = std::min(int(std::ceil(x1)), s2);
+    std::vector<float> w;
+    int start = s1;
+    if (s1 - x1 > 1e-3) {
+      start = s1 - 1;
+      w.push_back(float((s1 - x1) / width));
+    }
+    for (int s = s1; s < s2; ++s) w.push_back(float(1.0 / width));
+    if (x2 - s2 > 1e-3) w.push_back(float(std::min(std::min(x2 - s2, 1.0), width) / width));
+    CV_Assert(!w.empty() && start >= 0 && start + int(w.size()) <= from);
+    first.push_back(start);
+    count.push_back(int(w.size()));
+    weight.push_back(std::move(w));
+  }
+}
+
+AreaReduction::AreaReduction(cv::Size from, cv::Size to) : from_(from), to_(to) {
+  CV_Assert(!from.empty() && !to.empty());
+  const double sx = input_per_output(from.width, to.width), sy = input_per_output(from.height, to.height);
+  // (A pixel's taps: its input pixels, at most the reduction + 1.)
+  ours_ = sx >= 1.0 && sy >= 1.0 && !(whole(sx) && whole(sy)) && from != to && sx < kMostTaps - 1;
+  if (!ours_) return;
+  const Axis x(from.width, to.width), y(from.height, to.height);
+  first_ = x.first;
+  weight_.assign(size_t(to.width) * kMostTaps, 0.0f);
+  for (int d = 0; d < to.width; ++d) {
+    const int taps = x.count[size_t(d)];
+    CV_Assert(taps <= kMostTaps);
+    std::copy(x.weight[size_t(d)].begin(), x.weight[size_t(d)].end(), weight_.begin() + ptrdiff_t(d) * kMostTaps);
+    const bool last = x.first[size_t(d)] + taps == from.width;
+    (last ? last_ : by_taps_)[size_t(taps)].push_back(d);
+  }
+  row_first_ = y.first;
+  row_count_ = y.count;
+  row_weight_ = y.weight;
+}
+
+void AreaReduction::apply(const cv::Mat& in, cv::Mat& out) const {
+  CV_Assert(in.size() == from_ && out.data != in.data);
+  if (!ours_ || in.type() != CV_32FC3) {
+    cv::resize(in, out, to_, 0, 0, cv::INTER_AREA);
+    return;
+  }
+  out.create(to_, CV_32FC3);
+  const int n = 3 * to_.width;
+  // One stripe of output rows per thread, each with a row sum buffer made
+  // by the calling thread (the frame loop asks the allocator for the same
+  // blocks every frame). Within a stripe an input row shared by two
+  // output rows is summed once; every value is the same whatever the
+  // stripes.
+  const int stripes = std::max(1, std::min(to_.height, cv::getNumThreads()));
+  cv::Mat sums(stripes, n, CV_32F);
+  cv::parallel_for_(cv::Range(0, stripes), [&](const cv::Range& r) {
+    for (int k = r.start; k < r.end; ++k) {
+      float* held = sums.ptr<float>(k);
+      int held_row = -1;
+      const int y0 = int(int64_t(to_.height) * k / stripes), y1 = int(int64_t(to_.height) * (k + 1) / stripes);
+      for (int y = y0; y < y1; ++y) {
+        float* o = out.ptr<float>(y);
+        for (int t = 0; t < row_count_[size_t(y)]; ++t) {
+          const int row = row_first_[size_t(y)] + t;
+          if (row != held_row) {
+            for (int taps = 1; taps <= kMostTaps; ++taps) {
+              const std::vector<int>& plain = by_taps_[size_t(taps)];
+              const std::vector<int>& last = last_[size_t(taps)];
+              row_sums<false>(in.ptr<float>(row), first_.data(), weight_.data(), plain.data(), plain.size(), taps,
+                              kMostTaps, held);
+              row_sums<true>(in.ptr<float>(row), first_.data(), weight_.data(), last.data(), last.size(), taps,
+                             kMostTaps, held);
+            }
+            held_row = row;
+          }
+          const float w = row_weight_[size_t(y)][size_t(t)];
+          if (t == 0)
+            first_row_term(held, w, o, n);
+          else
+            add_row_term(held, w, o, n);
+        }
+      }
+    }
+  });
+}
+
+}  // namespace eyestream::retina

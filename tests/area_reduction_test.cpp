@@ -1,0 +1,79 @@
+// AreaReduction (retina/area_reduction.hpp) against OpenCV's cv::resize
+// with INTER_AREA, bit for bit: the retina stage's own reductions at 1080p
+// and 720p (0.31 and 0.47 site a pixel), odd factors each way, one axis
+// whole and the other not, a region of a larger image, values from 1e-9
+// to 1e9 cd/m^2 in one image with zeros, an infinity and a NaN; and the
+// cases it hands to cv::resize (whole factors, enlargement, one channel).
+#include "retina/area_reduction.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <opencv2/imgproc.hpp>
+
+namespace eyestream::retina {
+namespace {
+
+cv::Mat scene(cv::Size size, int type, cv::RNG& random) {
+  cv::Mat big(size.height + 3, size.width + 5, type);
+  random.fill(big, cv::RNG::UNIFORM, 0.0, 1e5);
+  const int cn = big.channels();
+  big.ptr<float>(1)[2 * cn] = 1e9f;
+  big.ptr<float>(1)[2 * cn + 1] = 1e-9f;
+  big.ptr<float>(2)[3 * cn] = 0.0f;
+  big.ptr<float>(size.height / 2)[cn * (size.width / 2)] = INFINITY;
+  big.ptr<float>(size.height)[cn * size.width - 1] = NAN;
+  return big(cv::Rect(cv::Point(2, 1), size));  // rows with gaps between them
+}
+
+void expect_as_opencv(const cv::Mat& frame, cv::Size to) {
+  cv::Mat want, got;
+  cv::resize(frame, want, to, 0, 0, cv::INTER_AREA);
+  AreaReduction(frame.size(), to).apply(frame, got);
+  ASSERT_EQ(got.size(), want.size()) << frame.size() << " to " << to;
+  ASSERT_EQ(got.type(), frame.type());
+  for (int y = 0; y < got.rows; ++y)
+    ASSERT_EQ(std::memcmp(got.ptr(y), want.ptr(y), size_t(got.cols) * got.elemSize()), 0)
+        << frame.size() << " to " << to << " row " << y;
+}
+
+TEST(AreaReduction, IsCvResizesAreaMeanBitForBit) {
+  cv::RNG random(5);
+  const std::pair<cv::Size, cv::Size> cases[] = {
+      {{1920, 1080}, {595, 335}},  // balanced's grid at 1080p
+      {{1280, 720}, {601, 338}},   // and at 720p
+      {{640, 360}, {320, 181}},    // near a half, not one
+      {{97, 61}, {13, 7}},         // odd factors, wide and narrow
+      {{100, 50}, {33, 25}},       // the rows a whole factor, the columns not
+      {{100, 50}, {50, 17}},       // the columns a whole factor, the rows not
+      {{7, 5}, {3, 2}},
+      {{5, 9}, {1, 1}},  // one output pixel
+  };
+  for (const auto& [from, to] : cases) expect_as_opencv(scene(from, CV_32FC3, random), to);
+}
+
+TEST(AreaReduction, LeavesWholeFactorsEnlargementsAndOtherTypesToOpenCv) {
+  cv::RNG random(6);
+  expect_as_opencv(scene({96, 60}, CV_32FC3, random), {24, 15});  // 4 each way: OpenCV's other path
+  expect_as_opencv(scene({96, 60}, CV_32FC3, random), {100, 30});  // wider
+  expect_as_opencv(scene({96, 60}, CV_32FC1, random), {31, 17});
+}
+
+TEST(AreaReduction, GivesTheSameValuesWhateverTheThreads) {
+  cv::RNG random(7);
+  const cv::Mat frame = scene({1920, 1080}, CV_32FC3, random);
+  const AreaReduction reduction(frame.size(), {595, 335});
+  const int threads = cv::getNumThreads();
+  cv::Mat one, many;
+  cv::setNumThreads(1);
+  reduction.apply(frame, one);
+  cv::setNumThreads(7);
+  reduction.apply(frame, many);
+  cv::setNumThreads(threads);
+  for (int y = 0; y < one.rows; ++y)
+    ASSERT_EQ(std::memcmp(one.ptr(y), many.ptr(y), size_t(one.cols) * one.elemSize()), 0) << "row " << y;
+}
+
+}  // namespace
+}  // namespace eyestream::retina
