@@ -49,6 +49,19 @@ void add_kept_row(const float* a, const float* b, float fy, const float* in, cv:
   }
 }
 
+// A frame row: the moved light already in `out`, plus the light the PSF
+// keeps on the frame's own pixel, kept x in (each channel o + k i, as
+// cv::Vec3f's own arithmetic gives it).
+EYESTREAM_VECTOR_CLONES
+void add_kept(const float* in, cv::Vec3f kept, float* out, int pixels) {
+  const float k0 = kept[0], k1 = kept[1], k2 = kept[2];
+  for (int x = 0; x < pixels; ++x) {
+    out[3 * x] = out[3 * x] + k0 * in[3 * x];
+    out[3 * x + 1] = out[3 * x + 1] + k1 * in[3 * x + 1];
+    out[3 * x + 2] = out[3 * x + 2] + k2 * in[3 * x + 2];
+  }
+}
+
 }  // namespace
 
 GlareStage::GlareStage(const Plan& plan)
@@ -199,9 +212,7 @@ cv::Mat GlareStage::spread(const cv::Mat& rgb, const glare::PsfWeights& w, doubl
   if (halved_.empty())
     return moved_light(rgb, glare::same_in_every_channel(w), [&](int y, float* row) {
       if (surround_row) surround_row(y, row);
-      cv::Vec3f* o = reinterpret_cast<cv::Vec3f*>(row);
-      const cv::Vec3f* in = rgb.ptr<cv::Vec3f>(y);
-      for (int x = 0; x < rgb.cols; ++x) o[x] += kept.mul(in[x]);
+      add_kept(rgb.ptr<float>(y), kept, row, rgb.cols);
     });
   cv::Mat moved = moved_light(rgb, glare::same_in_every_channel(w), surround_row);
   CV_Assert(moved.size() == halved_ && up_cols_ && up_rows_ && rgb.cols == int(up_cols_->w.size()) &&
