@@ -58,6 +58,25 @@ std::uint8_t first_kept_row(const float* level, const std::vector<float>& tau, s
   return deepest;
 }
 
+// The pixels of a row that take level k (k_row[x] == k) get its values
+// `from`; the others keep theirs. Every value is written, chosen bit for
+// bit by a mask, so that the loop is vectorised (as a branch per pixel,
+// or as a select of floats, it is not).
+typedef std::uint32_t FloatBits __attribute__((may_alias));
+
+EYESTREAM_VECTOR_CLONES
+void take_level(const std::uint8_t* __restrict k_row, std::uint8_t k, const float* __restrict from_values,
+                float* __restrict out_values, int pixels) {
+  const FloatBits* __restrict from = reinterpret_cast<const FloatBits*>(from_values);
+  FloatBits* __restrict out = reinterpret_cast<FloatBits*>(out_values);
+  for (int x = 0; x < pixels; ++x) {
+    const std::uint32_t take = k_row[x] == k ? 0xffffffffu : 0u;
+    out[3 * x] = (from[3 * x] & take) | (out[3 * x] & ~take);
+    out[3 * x + 1] = (from[3 * x + 1] & take) | (out[3 * x + 1] & ~take);
+    out[3 * x + 2] = (from[3 * x + 2] & take) | (out[3 * x + 2] & ~take);
+  }
+}
+
 // A reduced level map read at a frame's pixels a row at a time,
 // bilinearly with cv::resize INTER_LINEAR's geometry (the map's pixels
 // spread evenly over the frame): its two rows blended down, then the
@@ -294,8 +313,8 @@ void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
                          ay.w[size_t(y)], blended.data(), 3 * image.cols);
               from = reinterpret_cast<const cv::Vec3f*>(blended.data());
             }
-            for (int x = 0; x < image.cols; ++x)
-              if (k_row[x] == k) out[x] = from[x];
+            take_level(k_row, std::uint8_t(k), reinterpret_cast<const float*>(from), reinterpret_cast<float*>(out),
+                       image.cols);
           }
         }
       },
@@ -306,10 +325,7 @@ void AcuityLoss::write_full_row(cv::Mat& image, const cv::Mat& first, const std:
                                 int k, const cv::Mat& level, int y) {
   if (row_deepest[size_t(y)] < k) return;
   const std::uint8_t* k_row = first.ptr<std::uint8_t>(y);
-  const cv::Vec3f* in = level.ptr<cv::Vec3f>(y);
-  cv::Vec3f* out = image.ptr<cv::Vec3f>(y);
-  for (int x = 0; x < image.cols; ++x)
-    if (k_row[x] == k) out[x] = in[x];
+  take_level(k_row, std::uint8_t(k), level.ptr<float>(y), image.ptr<float>(y), image.cols);
 }
 
 void AcuityLoss::write_full_level(cv::Mat& image, const cv::Mat& first, const std::vector<std::uint8_t>& row_deepest,
