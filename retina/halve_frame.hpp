@@ -1,8 +1,9 @@
 // An image halved each way by the mean of each 2 x 2 block: what
 // cv::resize with INTER_AREA gives, bit for bit, made here in one
-// row-parallel vector loop for three-channel float images of even size
-// (OpenCV's plain loop there took 4.8 ms of a `fast` 1080p frame, this
-// 2.1, timed in place). Odd sizes, whose last row or column OpenCV
+// row-parallel loop for three-channel float images of even size, a
+// pixel's three values as one vector (OpenCV's plain loop there took 4.8
+// ms of a `fast` 1080p frame, a loop over values here 2.1, timed in place;
+// the compiler vectorised that loop only two floats wide). Odd sizes, whose last row or column OpenCV
 // weighs differently, and other types go to cv::resize itself. For the
 // glare stage's halved frame (`fast`) and the acuity loss's reduced
 // levels.
