@@ -1,6 +1,7 @@
 #include "retina/bilinear_rows.hpp"
 
 #include <algorithm>
+#include <cstring>
 
 #include "retina/vector_clones.hpp"
 
@@ -14,13 +15,42 @@ void enlarge_taps(const float* __restrict row, const int* __restrict lo, const i
   for (int x = 0; x < n; ++x) out[x] = row[lo[x]] * (1.0f - w[x]) + row[hi[x]] * w[x];
 }
 
-EYESTREAM_VECTOR_CLONES
+// A pixel's three channels and one more float as one vector (GCC's and
+// Clang's vector extension: SSE on x86-64, NEON on AArch64), loaded from
+// and stored to any float.
+typedef float Rgbx __attribute__((vector_size(16)));
+typedef float LooseRgbx __attribute__((vector_size(16), aligned(4)));
+
+inline Rgbx four_floats(const float* p) { return *reinterpret_cast<const LooseRgbx*>(p); }
+
+inline Rgbx three_floats(const float* p) {
+  Rgbx v = {0, 0, 0, 0};
+  std::memcpy(&v, p, 3 * sizeof(float));
+  return v;
+}
+
+// Three channels a pixel, the pixel's three values at once: the same
+// products and sum for each channel as a loop over values. The fourth
+// lane reads the map's next value and writes the next output pixel's
+// first, which that pixel then writes. The taps are in order, so the map
+// pixels before the last one read (hi[n - 1]) have a next value in the
+// row; the pixels reading that one, and the last output pixel, which has
+// no next one, move three floats. (On this project's AMD EPYC machine the
+// loop over values, as vector gathers, took twice the time.)
 void enlarge_taps3(const float* __restrict row, const int* __restrict lo, const int* __restrict hi,
                    const float* __restrict w, float* __restrict out, int n) {
+  if (n <= 0) return;
+  const int last = hi[n - 1];
   for (int x = 0; x < n; ++x) {
     const float fx = w[x];
-    const int x0 = 3 * lo[x], x1 = 3 * hi[x];
-    for (int c = 0; c < 3; ++c) out[3 * x + c] = row[x0 + c] * (1.0f - fx) + row[x1 + c] * fx;
+    const bool inside = hi[x] < last;
+    const Rgbx a = inside ? four_floats(row + 3 * lo[x]) : three_floats(row + 3 * lo[x]);
+    const Rgbx b = inside ? four_floats(row + 3 * hi[x]) : three_floats(row + 3 * hi[x]);
+    const Rgbx v = a * (1.0f - fx) + b * fx;
+    if (x + 1 < n)
+      *reinterpret_cast<LooseRgbx*>(out + 3 * x) = v;
+    else
+      std::memcpy(out + 3 * x, &v, 3 * sizeof(float));
   }
 }
 

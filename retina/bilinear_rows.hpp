@@ -1,10 +1,11 @@
 // The two passes of a bilinear enlargement (as cv::resize INTER_LINEAR),
 // a row at a time: a reduced row widened across through a BilinearAxis's
 // taps, and two widened rows blended down. Compiled for AVX-512 and AVX2
-// beside the baseline (vector_clones.hpp; the same bytes either way), the
-// taps' reads as vector gathers, except along the axis's repeating stretch
-// (repeating_taps.hpp), read a block of pixels at a time from plain loads
-// with the same products and sums. Outputs must not overlap inputs.
+// beside the baseline (vector_clones.hpp; the same bytes either way); a
+// three-channel pixel's values at once as one vector; along the axis's
+// repeating stretch (repeating_taps.hpp) a block of pixels at a time from
+// plain loads, without the taps' lookups; the same products and sums
+// throughout. Outputs must not overlap inputs.
 #pragma once
 
 #include "retina/bilinear_axis.hpp"
