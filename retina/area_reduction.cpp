@@ -6,6 +6,7 @@
 #include <cstring>
 #include <opencv2/imgproc.hpp>
 
+#include "retina/pixel_vector.hpp"
 #include "retina/vector_clones.hpp"
 
 namespace eyestream::retina {
@@ -18,18 +19,6 @@ double input_per_output(int from, int to) { return 1.0 / (double(to) / double(fr
 
 // Whether cv::resize takes its whole-factor path for this axis.
 bool whole(double scale) { return std::abs(scale - double(cvRound(scale))) < DBL_EPSILON; }
-
-// A pixel's three channels and an unused fourth as one vector (GCC's and
-// Clang's vector extension: SSE on x86-64, NEON on AArch64): each tap is
-// one multiply and one add for all three. Loaded from any float.
-typedef float Rgbx __attribute__((vector_size(16)));
-typedef float LooseRgbx __attribute__((vector_size(16), aligned(4)));
-
-inline Rgbx three_floats(const float* p) {
-  Rgbx v = {0, 0, 0, 0};
-  std::memcpy(&v, p, 3 * sizeof(float));
-  return v;
-}
 
 // Output pixel d's sums: 0 + input pixel first[d] w_0 + the next one's
 // w_1 + ..., left to right, each channel alone (the fourth lane is never
@@ -44,10 +33,9 @@ void row_sums(const float* __restrict in, const int* __restrict first, const flo
     const int d = pixels[k];
     const float* p = in + 3 * size_t(first[d]);
     const float* w = weight + size_t(d) * stride;
-    Rgbx sum = {0, 0, 0, 0};
-    for (int t = 0; t < taps; ++t)
-      sum = sum + (last ? three_floats(p + 3 * t) : Rgbx(*reinterpret_cast<const LooseRgbx*>(p + 3 * t))) * w[t];
-    std::memcpy(out + 3 * size_t(d), &sum, 3 * sizeof(float));
+    PixelVector sum = {0, 0, 0, 0};
+    for (int t = 0; t < taps; ++t) sum = sum + (last ? three_floats(p + 3 * t) : four_floats(p + 3 * t)) * w[t];
+    store_three(out + 3 * size_t(d), sum);
   }
 }
 

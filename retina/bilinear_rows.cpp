@@ -1,8 +1,8 @@
 #include "retina/bilinear_rows.hpp"
 
 #include <algorithm>
-#include <cstring>
 
+#include "retina/pixel_vector.hpp"
 #include "retina/vector_clones.hpp"
 
 namespace eyestream::retina {
@@ -13,20 +13,6 @@ EYESTREAM_VECTOR_CLONES
 void enlarge_taps(const float* __restrict row, const int* __restrict lo, const int* __restrict hi,
                   const float* __restrict w, float* __restrict out, int n) {
   for (int x = 0; x < n; ++x) out[x] = row[lo[x]] * (1.0f - w[x]) + row[hi[x]] * w[x];
-}
-
-// A pixel's three channels and one more float as one vector (GCC's and
-// Clang's vector extension: SSE on x86-64, NEON on AArch64), loaded from
-// and stored to any float.
-typedef float Rgbx __attribute__((vector_size(16)));
-typedef float LooseRgbx __attribute__((vector_size(16), aligned(4)));
-
-inline Rgbx four_floats(const float* p) { return *reinterpret_cast<const LooseRgbx*>(p); }
-
-inline Rgbx three_floats(const float* p) {
-  Rgbx v = {0, 0, 0, 0};
-  std::memcpy(&v, p, 3 * sizeof(float));
-  return v;
 }
 
 // Three channels a pixel, the pixel's three values at once: the same
@@ -44,13 +30,13 @@ void enlarge_taps3(const float* __restrict row, const int* __restrict lo, const 
   for (int x = 0; x < n; ++x) {
     const float fx = w[x];
     const bool inside = hi[x] < last;
-    const Rgbx a = inside ? four_floats(row + 3 * lo[x]) : three_floats(row + 3 * lo[x]);
-    const Rgbx b = inside ? four_floats(row + 3 * hi[x]) : three_floats(row + 3 * hi[x]);
-    const Rgbx v = a * (1.0f - fx) + b * fx;
+    const PixelVector a = inside ? four_floats(row + 3 * lo[x]) : three_floats(row + 3 * lo[x]);
+    const PixelVector b = inside ? four_floats(row + 3 * hi[x]) : three_floats(row + 3 * hi[x]);
+    const PixelVector v = a * (1.0f - fx) + b * fx;
     if (x + 1 < n)
-      *reinterpret_cast<LooseRgbx*>(out + 3 * x) = v;
+      store_four(out + 3 * x, v);
     else
-      std::memcpy(out + 3 * x, &v, 3 * sizeof(float));
+      store_three(out + 3 * x, v);
   }
 }
 

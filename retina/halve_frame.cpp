@@ -2,17 +2,11 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "retina/pixel_vector.hpp"
+
 namespace eyestream::retina {
 
 namespace {
-
-// A pixel's three channels and one more float as one vector (GCC's and
-// Clang's vector extension: SSE on x86-64, NEON on AArch64), loaded from
-// and stored to any float.
-typedef float Rgbx __attribute__((vector_size(16)));
-typedef float LooseRgbx __attribute__((vector_size(16), aligned(4)));
-
-inline Rgbx four_floats(const float* p) { return *reinterpret_cast<const LooseRgbx*>(p); }
 
 // One output row of three-channel pixels from input rows a and b: each
 // value (0 + (a[x] + a[x + 3] + b[x] + b[x + 3])) / 4, OpenCV's terms in
@@ -23,13 +17,14 @@ inline Rgbx four_floats(const float* p) { return *reinterpret_cast<const LooseRg
 // writes the next output pixel's, which that pixel then writes; the last
 // pixel, which has no next one, a value at a time.
 void halve_row(const float* __restrict a, const float* __restrict b, float* __restrict out, int pixels) {
-  const Rgbx zero = {0, 0, 0, 0}, quarter = {0.25f, 0.25f, 0.25f, 0.25f};
+  const PixelVector zero = {0, 0, 0, 0}, quarter = {0.25f, 0.25f, 0.25f, 0.25f};
   int x = 0;
   for (; x + 1 < pixels; ++x) {
     const float* p = a + 6 * size_t(x);
     const float* q = b + 6 * size_t(x);
-    const Rgbx v = (zero + (((four_floats(p) + four_floats(p + 3)) + four_floats(q)) + four_floats(q + 3))) * quarter;
-    *reinterpret_cast<LooseRgbx*>(out + 3 * size_t(x)) = v;
+    const PixelVector v =
+        (zero + (((four_floats(p) + four_floats(p + 3)) + four_floats(q)) + four_floats(q + 3))) * quarter;
+    store_four(out + 3 * size_t(x), v);
   }
   for (; x < pixels; ++x)
     for (int c = 0; c < 3; ++c)

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "retina/pixel_vector.hpp"
+
 namespace eyestream::pipeline {
 
 namespace {
@@ -14,10 +16,10 @@ constexpr int kBlockRows = 32;  // plane rows per task
 // y + 0.5.
 inline int row_above(float y) { return int(y + 0.5f) - 1; }
 
-// A pixel's three channels and an unused fourth, as one vector (GCC's and
-// Clang's vector extension: SSE on x86-64, NEON on AArch64), so that
-// each of the four bilinear shares is one multiply and one add.
-typedef float Rgbx __attribute__((vector_size(16)));
+// A pixel's three channels and an unused fourth, as one vector
+// (retina/pixel_vector.hpp), so that each of the four bilinear shares is
+// one multiply and one add.
+using Rgbx = retina::PixelVector;
 
 // A bilinear splat's two neighbouring sums in one accumulator row: the
 // left one written at once, the right one held until the next pixel.
