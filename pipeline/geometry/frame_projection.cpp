@@ -6,6 +6,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "io/error.hpp"
+#include "retina/pixel_vector.hpp"
 
 namespace eyestream::pipeline {
 
@@ -50,51 +51,98 @@ void normalise_row<float, 3>(const cv::Vec4f* sums, const float* m, const cv::Sc
   }
 }
 
-// Accumulates the bilinear splat of image rows [first_row, last_row] into
-// the target rows [r0, r0 + kBlockRows), then writes their normalised means
-// to `out` (times `multiplier` when given; `outside` where nothing lands).
+// One image row's bilinear splat into a block's sums (target rows [r0,
+// r0 + rows), each sum the pixel's channels and its weight): every share
+// value x ((1 - fx or fx) x (1 - fy or fy)), added in the row's order.
 template <typename T, int C>
-void splat_block(const cv::Mat& image, const cv::Mat& positions, Affine a, int r0, int first_row, int last_row,
-                 const cv::Scalar& outside, const cv::Mat& multiplier, cv::Vec<T, C + 1>* sums, cv::Mat& out) {
+void splat_row(const T* in, const cv::Vec2f* pos, int pixels, float kx, float ky, float offset, int r0, int rows,
+               int cols, cv::Vec<T, C + 1>* sums) {
   using Acc = cv::Vec<T, C + 1>;
-  const int rows = std::min(kBlockRows, out.rows - r0), cols = out.cols;
-  if (last_row < first_row) {  // nothing lands on the block: all outside
-    for (int j = 0; j < rows; ++j) {
-      T* o = out.ptr<T>(r0 + j);
-      for (int i = 0; i < cols; ++i)
-        for (int c = 0; c < C; ++c) o[i * C + c] = T(outside[c]);
-    }
-    return;
-  }
-  std::fill(sums, sums + size_t(rows) * size_t(cols), Acc::all(0));
-  const float kx = float(a.kx), ky = float(a.ky), offset = float(a.offset);
-  for (int y = first_row; y <= last_row; ++y) {
-    const T* in = image.ptr<T>(y);
-    const cv::Vec2f* pos = positions.ptr<cv::Vec2f>(y);
-    for (int x = 0; x < image.cols; ++x) {
-      const float tx = pos[x][0] * kx + offset, ty = pos[x][1] * ky + offset;
-      const int i0 = int(std::floor(tx)), j0 = int(std::floor(ty));
-      if (j0 + 1 < r0 || j0 >= r0 + rows) continue;
-      const T fx = T(tx - i0), fy = T(ty - j0);
-      Acc value;
-      for (int c = 0; c < C; ++c) value[c] = in[x * C + c];
-      value[C] = T(1);
-      for (int dj = 0; dj < 2; ++dj) {
-        const int j = j0 + dj - r0;
-        if (j < 0 || j >= rows) continue;
-        const T wy = dj ? fy : T(1) - fy;
-        for (int di = 0; di < 2; ++di) {
-          const int i = i0 + di;
-          if (i < 0 || i >= cols) continue;
-          sums[size_t(j) * size_t(cols) + size_t(i)] += value * ((di ? fx : T(1) - fx) * wy);
-        }
+  for (int x = 0; x < pixels; ++x) {
+    const float tx = pos[x][0] * kx + offset, ty = pos[x][1] * ky + offset;
+    const int i0 = int(std::floor(tx)), j0 = int(std::floor(ty));
+    if (j0 + 1 < r0 || j0 >= r0 + rows) continue;
+    const T fx = T(tx - i0), fy = T(ty - j0);
+    Acc value;
+    for (int c = 0; c < C; ++c) value[c] = in[x * C + c];
+    value[C] = T(1);
+    for (int dj = 0; dj < 2; ++dj) {
+      const int j = j0 + dj - r0;
+      if (j < 0 || j >= rows) continue;
+      const T wy = dj ? fy : T(1) - fy;
+      for (int di = 0; di < 2; ++di) {
+        const int i = i0 + di;
+        if (i < 0 || i >= cols) continue;
+        sums[size_t(j) * size_t(cols) + size_t(i)] += value * ((di ? fx : T(1) - fx) * wy);
       }
     }
   }
+}
+
+// The same for three float channels, the channels and the weight as one
+// vector (retina/pixel_vector.hpp): the same products and sums, one
+// multiply and one add a share instead of four of each.
+template <>
+void splat_row<float, 3>(const float* in, const cv::Vec2f* pos, int pixels, float kx, float ky, float offset, int r0,
+                         int rows, int cols, cv::Vec4f* sums) {
+  using retina::PixelVector;
+  for (int x = 0; x < pixels; ++x) {
+    const float tx = pos[x][0] * kx + offset, ty = pos[x][1] * ky + offset;
+    const int i0 = int(std::floor(tx)), j0 = int(std::floor(ty));
+    if (j0 + 1 < r0 || j0 >= r0 + rows) continue;
+    const float fx = tx - float(i0), fy = ty - float(j0);
+    const PixelVector value = {in[3 * x], in[3 * x + 1], in[3 * x + 2], 1.0f};
+    for (int dj = 0; dj < 2; ++dj) {
+      const int j = j0 + dj - r0;
+      if (j < 0 || j >= rows) continue;
+      const float wy = dj ? fy : 1.0f - fy;
+      for (int di = 0; di < 2; ++di) {
+        const int i = i0 + di;
+        if (i < 0 || i >= cols) continue;
+        float* sum = sums[size_t(j) * size_t(cols) + size_t(i)].val;
+        PixelVector v;
+        std::memcpy(&v, sum, sizeof v);
+        v = v + value * ((di ? fx : 1.0f - fx) * wy);
+        std::memcpy(sum, &v, sizeof v);
+      }
+    }
+  }
+}
+
+// `outside` in target pixels [from, to) of a row.
+template <typename T, int C>
+void fill_outside(const cv::Scalar& outside, T* o, int from, int to) {
+  for (int i = from; i < to; ++i)
+    for (int c = 0; c < C; ++c) o[i * C + c] = T(outside[c]);
+}
+
+// Accumulates the bilinear splat of image rows [first_row, last_row] into
+// the target rows [r0, r0 + kBlockRows), then writes their normalised means
+// to `out` (times `multiplier` when given; `outside` where nothing lands).
+// Only target columns [lo, hi) can be reached (the rows' positions
+// across): the sums are kept and normalised there only; the rest of the
+// block is `outside` (the retina's grid is twice the frame each way).
+template <typename T, int C>
+void splat_block(const cv::Mat& image, const cv::Mat& positions, Affine a, int r0, int first_row, int last_row,
+                 int lo, int hi, const cv::Scalar& outside, const cv::Mat& multiplier, cv::Vec<T, C + 1>* sums,
+                 cv::Mat& out) {
+  using Acc = cv::Vec<T, C + 1>;
+  const int rows = std::min(kBlockRows, out.rows - r0), cols = out.cols;
+  if (last_row < first_row || lo >= hi) {  // nothing lands on the block: all outside
+    for (int j = 0; j < rows; ++j) fill_outside<T, C>(outside, out.ptr<T>(r0 + j), 0, cols);
+    return;
+  }
+  for (int j = 0; j < rows; ++j)
+    std::fill(sums + size_t(j) * size_t(cols) + size_t(lo), sums + size_t(j) * size_t(cols) + size_t(hi), Acc::all(0));
+  const float kx = float(a.kx), ky = float(a.ky), offset = float(a.offset);
+  for (int y = first_row; y <= last_row; ++y)
+    splat_row<T, C>(image.ptr<T>(y), positions.ptr<cv::Vec2f>(y), image.cols, kx, ky, offset, r0, rows, cols, sums);
   for (int j = 0; j < rows; ++j) {
     T* o = out.ptr<T>(r0 + j);
-    const float* m = multiplier.empty() ? nullptr : multiplier.ptr<float>(r0 + j);
-    normalise_row<T, C>(sums + size_t(j) * size_t(cols), m, outside, o, cols);
+    const float* m = multiplier.empty() ? nullptr : multiplier.ptr<float>(r0 + j) + lo;
+    fill_outside<T, C>(outside, o, 0, lo);
+    normalise_row<T, C>(sums + size_t(j) * size_t(cols) + size_t(lo), m, outside, o + size_t(lo) * C, hi - lo);
+    fill_outside<T, C>(outside, o, hi, cols);
   }
 }
 
@@ -104,17 +152,27 @@ void splat_block(const cv::Mat& image, const cv::Mat& positions, Affine a, int r
 template <typename T, int C>
 void splat_rows(const cv::Mat& image, const cv::Mat& positions, Affine a, const cv::Scalar& outside,
                 const cv::Mat& multiplier, cv::Mat& out) {
-  std::vector<int> top(size_t(image.rows)), bottom(size_t(image.rows));
+  // Each image row's reach: the target rows [top, bottom] its footprints
+  // can touch, and the columns [left, right), from the footprints' own
+  // left columns (splat_block's arithmetic: the same floors).
+  std::vector<int> top(size_t(image.rows)), bottom(size_t(image.rows)), left(size_t(image.rows)),
+      right(size_t(image.rows));
+  const float kx = float(a.kx), offset = float(a.offset);
   cv::parallel_for_(cv::Range(0, image.rows), [&](const cv::Range& r) {
     for (int y = r.start; y < r.end; ++y) {
       const cv::Vec2f* pos = positions.ptr<cv::Vec2f>(y);
-      float low = 1e30f, high = -1e30f;
+      float low = 1e30f, high = -1e30f, west = 1e30f, east = -1e30f;
       for (int x = 0; x < image.cols; ++x) {
         low = std::min(low, pos[x][1]);
         high = std::max(high, pos[x][1]);
+        const float tx = pos[x][0] * kx + offset;
+        west = std::min(west, tx);
+        east = std::max(east, tx);
       }
       top[size_t(y)] = int(std::floor(low * a.ky + a.offset));
       bottom[size_t(y)] = int(std::floor(high * a.ky + a.offset)) + 1;
+      left[size_t(y)] = int(std::floor(west));
+      right[size_t(y)] = int(std::floor(east)) + 2;
     }
   });
   const int blocks = (out.rows + kBlockRows - 1) / kBlockRows;
@@ -128,13 +186,15 @@ void splat_rows(const cv::Mat& image, const cv::Mat& positions, Affine a, const 
     for (int k = r.start; k < r.end; ++k)
     for (int b = k; b < blocks; b += shares) {
       const int r0 = b * kBlockRows, r1 = std::min(out.rows, r0 + kBlockRows);
-      int first = image.rows, last = -1;
+      int first = image.rows, last = -1, lo = out.cols, hi = 0;
       for (int y = 0; y < image.rows; ++y) {
         if (bottom[size_t(y)] < r0 || top[size_t(y)] >= r1) continue;
         first = std::min(first, y);
         last = std::max(last, y);
+        lo = std::min(lo, std::max(left[size_t(y)], 0));
+        hi = std::max(hi, std::min(right[size_t(y)], out.cols));
       }
-      splat_block<T, C>(image, positions, a, r0, first, last, outside, multiplier,
+      splat_block<T, C>(image, positions, a, r0, first, last, lo, hi, outside, multiplier,
                         accumulators[size_t(k)].ptr<cv::Vec<T, C + 1>>(), out);
     }
   });
