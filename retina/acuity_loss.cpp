@@ -301,7 +301,8 @@ void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
           for (int x = 0; x < image.cols; ++x) taken |= 1u << k_row[x];
           for (int k = 1; k <= deepest; ++k) {
             const cv::Mat& m = kept[size_t(k)];
-            if (!(taken >> k & 1u) || m.empty()) continue;  // not taken, or written already
+            // Not taken, written already, or the image itself (every level a copy).
+            if (!(taken >> k & 1u) || m.empty() || m.data == image.data) continue;
             const cv::Vec3f* from = nullptr;
             if (factor[size_t(k)] == 1) {
               from = m.ptr<cv::Vec3f>(y);

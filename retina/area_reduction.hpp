@@ -3,14 +3,19 @@
 // (OpenCV's taps, weights and order of terms: each output row is the sum
 // of its input rows' weighted row sums, each row sum the sum of its
 // pixels' weighted values). OpenCV's loop adds one weighted value at a
-// time through a table of taps, storing and reloading the sum each time
-// (5.8 ms for 1920 x 1080 to 595 x 335 on one thread); here a pixel's
-// three sums stay in one vector register, and an input row shared by two
-// output rows is summed once. (Vector gathers over the output values were
-// slower than OpenCV on this project's AMD EPYC machine.) For the
-// retina stage's reduction of the frame to `balanced`'s grid (0.31 site
-// a pixel at 1080p). Other types, whole factors (where OpenCV takes its
-// other path) and enlargements go to cv::resize itself.
+// time through a table of taps, storing and reloading the sum each time;
+// here a pixel's three sums stay in one vector register, and an input row
+// shared by two output rows is summed once (for 1920 x 1080 to 595 x 335
+// on one thread, about half OpenCV's time; vector gathers over the output
+// values were slower than OpenCV on this project's AMD EPYC machine). For
+// the retina stage's reduction of the frame to `balanced`'s grid (0.31
+// site a pixel at 1080p). Other types, whole factors each way (where
+// OpenCV takes its other path), enlargements and reductions of 7 or more
+// across (past the taps a pixel holds here) go to cv::resize itself. One
+// difference: OpenCV starts the first row of each of its row stripes at
+// +0 + the first term, the others at the first term, so where that term
+// is -0 (a negative row sum too small for a float) its output depends on
+// its stripes; here it is the term, -0.
 #pragma once
 
 #include <array>
@@ -28,6 +33,9 @@ class AreaReduction {
 
   // out = `in` (from()-sized) reduced to to(). out must not be in.
   void apply(const cv::Mat& in, cv::Mat& out) const;
+  // Whether apply() makes three-channel floats itself (else cv::resize
+  // does).
+  bool replaces_opencv() const { return ours_; }
 
  private:
   // One axis's taps: output index d takes input indices
