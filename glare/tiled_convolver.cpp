@@ -107,7 +107,8 @@ void merge_row(const double* r0, const double* r1, const double* r2, double scal
   for (; x + 4 <= n; x += 4) {
     const Float4 a = scaled_floor(r0 + x, scale), b = scaled_floor(r1 + x, scale), c = scaled_floor(r2 + x, scale);
     float* o = out + 3 * x;  // a0 b0 c0 a1 | b1 c1 a2 b2 | c2 a3 b3 c3
-    *reinterpret_cast<LooseFloat4*>(o) = __builtin_shufflevector(__builtin_shufflevector(a, b, 0, 4, 1, 5), c, 0, 1, 4, 2);
+    *reinterpret_cast<LooseFloat4*>(o) =
+        __builtin_shufflevector(__builtin_shufflevector(a, b, 0, 4, 1, 5), c, 0, 1, 4, 2);
     *reinterpret_cast<LooseFloat4*>(o + 4) =
         __builtin_shufflevector(__builtin_shufflevector(b, c, 1, 5, 2, 6), a, 0, 1, 6, 2);
     *reinterpret_cast<LooseFloat4*>(o + 8) =

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -75,6 +76,17 @@ void take_level(const std::uint8_t* __restrict k_row, std::uint8_t k, const floa
     out[3 * x + 1] = (from[3 * x + 1] & take) | (out[3 * x + 1] & ~take);
     out[3 * x + 2] = (from[3 * x + 2] & take) | (out[3 * x + 2] & ~take);
   }
+}
+
+// The pixels [x0, x1) of a row from the first to the last that takes
+// level k (k_row[x] == k), by the C library's byte searches; empty when
+// none does.
+std::pair<int, int> level_span(const std::uint8_t* k_row, int k, int cols) {
+  const void* first = std::memchr(k_row, k, size_t(cols));
+  if (!first) return {0, 0};
+  const void* last = memrchr(k_row, k, size_t(cols));
+  return {int(static_cast<const std::uint8_t*>(first) - k_row),
+          int(static_cast<const std::uint8_t*>(last) - k_row) + 1};
 }
 
 // A reduced level map read at a frame's pixels a row at a time,
@@ -296,26 +308,27 @@ void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
         for (int y = rows.start; y < rows.end; ++y) {
           if (row_deepest[size_t(y)] == 0) continue;
           const std::uint8_t* k_row = first.ptr<std::uint8_t>(y);
-          cv::Vec3f* out = image.ptr<cv::Vec3f>(y);
-          std::uint32_t taken = 0;  // bit k: a pixel of the row takes level k
-          for (int x = 0; x < image.cols; ++x) taken |= 1u << k_row[x];
+          float* out = image.ptr<float>(y);
           for (int k = 1; k <= deepest; ++k) {
             const cv::Mat& m = kept[size_t(k)];
-            // Not taken, written already, or the image itself (every level a copy).
-            if (!(taken >> k & 1u) || m.empty() || m.data == image.data) continue;
-            const cv::Vec3f* from = nullptr;
+            // Written already, or the image itself (every level a copy).
+            if (m.empty() || m.data == image.data) continue;
+            // Only the span of the row's pixels that take it (none: not taken).
+            const auto [x0, x1] = level_span(k_row, k, image.cols);
+            if (x0 >= x1) continue;
+            const float* from = nullptr;
             if (factor[size_t(k)] == 1) {
-              from = m.ptr<cv::Vec3f>(y);
+              from = m.ptr<float>(y);
             } else {
               if (!enlarged[size_t(k)]) enlarged[size_t(k)].emplace(m, *across[size_t(k)], image.cols);
               const BilinearAxis& ay = *down[size_t(k)];
               blended.resize(size_t(image.cols) * 3);
-              blend_rows(enlarged[size_t(k)]->row(ay.lo[size_t(y)]), enlarged[size_t(k)]->row(ay.hi[size_t(y)]),
-                         ay.w[size_t(y)], blended.data(), 3 * image.cols);
-              from = reinterpret_cast<const cv::Vec3f*>(blended.data());
+              blend_rows(enlarged[size_t(k)]->row(ay.lo[size_t(y)]) + 3 * x0,
+                         enlarged[size_t(k)]->row(ay.hi[size_t(y)]) + 3 * x0, ay.w[size_t(y)], blended.data() + 3 * x0,
+                         3 * (x1 - x0));
+              from = blended.data();
             }
-            take_level(k_row, std::uint8_t(k), reinterpret_cast<const float*>(from), reinterpret_cast<float*>(out),
-                       image.cols);
+            take_level(k_row + x0, std::uint8_t(k), from + 3 * x0, out + 3 * x0, x1 - x0);
           }
         }
       },
@@ -326,7 +339,9 @@ void AcuityLoss::write_full_row(cv::Mat& image, const cv::Mat& first, const std:
                                 int k, const cv::Mat& level, int y) {
   if (row_deepest[size_t(y)] < k) return;
   const std::uint8_t* k_row = first.ptr<std::uint8_t>(y);
-  take_level(k_row, std::uint8_t(k), level.ptr<float>(y), image.ptr<float>(y), image.cols);
+  const auto [x0, x1] = level_span(k_row, k, image.cols);
+  if (x0 < x1)
+    take_level(k_row + x0, std::uint8_t(k), level.ptr<float>(y) + 3 * x0, image.ptr<float>(y) + 3 * x0, x1 - x0);
 }
 
 void AcuityLoss::write_full_level(cv::Mat& image, const cv::Mat& first, const std::vector<std::uint8_t>& row_deepest,
