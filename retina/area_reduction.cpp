@@ -84,7 +84,7 @@ AreaReduction::AreaReduction(cv::Size from, cv::Size to) : from_(from), to_(to) 
   // (A pixel's taps: its input pixels, at most the reduction rounded up, + 1.)
   ours_ = sx >= 1.0 && sy >= 1.0 && !(whole(sx) && whole(sy)) && from != to && sx < kMostTaps - 1;
   if (!ours_) return;
-  const Axis x(from.width, to.width), y(from.height, to.height);
+  const Axis x(from.width, to.width);
   first_ = x.first;
   weight_.assign(size_t(to.width) * kMostTaps, 0.0f);
   for (int d = 0; d < to.width; ++d) {
@@ -94,9 +94,7 @@ AreaReduction::AreaReduction(cv::Size from, cv::Size to) : from_(from), to_(to) 
     const bool last = x.first[size_t(d)] + taps == from.width;
     (last ? last_ : by_taps_)[size_t(taps)].push_back(d);
   }
-  row_first_ = y.first;
-  row_count_ = y.count;
-  row_weight_ = y.weight;
+  down_.emplace(from.height, to.height);
 }
 
 void AreaReduction::apply(const cv::Mat& in, cv::Mat& out) const {
@@ -121,8 +119,8 @@ void AreaReduction::apply(const cv::Mat& in, cv::Mat& out) const {
       const int y0 = int(int64_t(to_.height) * k / stripes), y1 = int(int64_t(to_.height) * (k + 1) / stripes);
       for (int y = y0; y < y1; ++y) {
         float* o = out.ptr<float>(y);
-        for (int t = 0; t < row_count_[size_t(y)]; ++t) {
-          const int row = row_first_[size_t(y)] + t;
+        for (int t = 0; t < down_->count[size_t(y)]; ++t) {
+          const int row = down_->first[size_t(y)] + t;
           if (row != held_row) {
             for (int taps = 1; taps <= kMostTaps; ++taps) {
               const std::vector<int>& plain = by_taps_[size_t(taps)];
@@ -134,7 +132,7 @@ void AreaReduction::apply(const cv::Mat& in, cv::Mat& out) const {
             }
             held_row = row;
           }
-          const float w = row_weight_[size_t(y)][size_t(t)];
+          const float w = down_->weight[size_t(y)][size_t(t)];
           if (t == 0)
             first_row_term(held, w, o, n);
           else

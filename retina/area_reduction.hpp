@@ -19,6 +19,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <opencv2/core.hpp>
 #include <vector>
 
@@ -55,8 +56,7 @@ class AreaReduction {
   std::vector<int> first_;
   std::vector<float> weight_;
   std::array<std::vector<int>, kMostTaps + 1> by_taps_, last_;
-  std::vector<int> row_first_, row_count_;
-  std::vector<std::vector<float>> row_weight_;
+  std::optional<Axis> down_;  // the output rows' taps
 };
 
 }  // namespace eyestream::retina

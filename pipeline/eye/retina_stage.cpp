@@ -186,13 +186,9 @@ cv::Size RetinaStage::reduced_frame_size(cv::Size frame) const {
 }
 
 cv::Mat RetinaStage::reduce_frame(const cv::Mat& frame) const {
-  const cv::Size size = reduced_frame_size(frame.size());
-  if (size == frame.size()) return frame;
+  if (!reduction_) return frame;  // the grid as fine as the frame
   cv::Mat out;
-  if (reduction_ && reduction_->from() == frame.size())
-    reduction_->apply(frame, out);
-  else
-    cv::resize(frame, out, size, 0, 0, cv::INTER_AREA);
+  reduction_->apply(frame, out);
   return out;
 }
 

@@ -51,6 +51,23 @@ void normalise_row<float, 3>(const cv::Vec4f* sums, const float* m, const cv::Sc
   }
 }
 
+// sum += value x share, each channel and the weight alone.
+template <typename T, int N>
+inline void add_share(cv::Vec<T, N>& sum, const cv::Vec<T, N>& value, T share) {
+  sum += value * share;
+}
+
+// The same for three float channels and the weight as one vector
+// (retina/pixel_vector.hpp): the same products and sums, one multiply and
+// one add instead of four of each.
+inline void add_share(cv::Vec4f& sum, const cv::Vec4f& value, float share) {
+  retina::PixelVector s, v;
+  std::memcpy(&s, sum.val, sizeof s);
+  std::memcpy(&v, value.val, sizeof v);
+  s = s + v * share;
+  std::memcpy(sum.val, &s, sizeof s);
+}
+
 // One image row's bilinear splat into a block's sums (target rows [r0,
 // r0 + rows), each sum the pixel's channels and its weight): every share
 // value x ((1 - fx or fx) x (1 - fy or fy)), added in the row's order.
@@ -73,37 +90,7 @@ void splat_row(const T* in, const cv::Vec2f* pos, int pixels, float kx, float ky
       for (int di = 0; di < 2; ++di) {
         const int i = i0 + di;
         if (i < 0 || i >= cols) continue;
-        sums[size_t(j) * size_t(cols) + size_t(i)] += value * ((di ? fx : T(1) - fx) * wy);
-      }
-    }
-  }
-}
-
-// The same for three float channels, the channels and the weight as one
-// vector (retina/pixel_vector.hpp): the same products and sums, one
-// multiply and one add a share instead of four of each.
-template <>
-void splat_row<float, 3>(const float* in, const cv::Vec2f* pos, int pixels, float kx, float ky, float offset, int r0,
-                         int rows, int cols, cv::Vec4f* sums) {
-  using retina::PixelVector;
-  for (int x = 0; x < pixels; ++x) {
-    const float tx = pos[x][0] * kx + offset, ty = pos[x][1] * ky + offset;
-    const int i0 = int(std::floor(tx)), j0 = int(std::floor(ty));
-    if (j0 + 1 < r0 || j0 >= r0 + rows) continue;
-    const float fx = tx - float(i0), fy = ty - float(j0);
-    const PixelVector value = {in[3 * x], in[3 * x + 1], in[3 * x + 2], 1.0f};
-    for (int dj = 0; dj < 2; ++dj) {
-      const int j = j0 + dj - r0;
-      if (j < 0 || j >= rows) continue;
-      const float wy = dj ? fy : 1.0f - fy;
-      for (int di = 0; di < 2; ++di) {
-        const int i = i0 + di;
-        if (i < 0 || i >= cols) continue;
-        float* sum = sums[size_t(j) * size_t(cols) + size_t(i)].val;
-        PixelVector v;
-        std::memcpy(&v, sum, sizeof v);
-        v = v + value * ((di ? fx : 1.0f - fx) * wy);
-        std::memcpy(sum, &v, sizeof v);
+        add_share(sums[size_t(j) * size_t(cols) + size_t(i)], value, (di ? fx : T(1) - fx) * wy);
       }
     }
   }
