@@ -115,8 +115,10 @@ ffprobe -v error -select_streams v:0 -show_entries stream_side_data=max_content,
 # CIEDE2000 against reference over all frames and on its worst frame; with
 # --bench also the end-to-end times of `fast` and `balanced` to H.264.
 "$es" sample -q night-city -o "$work/city" --width 1920 --height 1080 --duration 1.5
+# Uncompressed: ZIP would spend most of these runs' time writing and reading.
 for q in reference balanced fast; do
-  "$es" run -q -i "$work/city/frames/%05d.exr" -g "$work/city/gaze.csv" -o "$work/city/$q/%05d.exr" --quality $q
+  "$es" run -q -i "$work/city/frames/%05d.exr" -g "$work/city/gaze.csv" -o "$work/city/$q/%05d.exr" --quality $q \
+    --exr-compression none
 done
 for q in balanced fast; do
   "$es" compare --metric de99 --fail 100 --warn 100 --json "$work/city/$q.json" \

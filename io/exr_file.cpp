@@ -224,11 +224,35 @@ ExrImage read_exr(const std::string& path, std::int64_t max_pixels, const std::s
   }
 }
 
+namespace {
+
+Imf::Compression imf_compression(ExrCompression c) {
+  switch (c) {
+    case ExrCompression::kNone: return Imf::NO_COMPRESSION;
+    case ExrCompression::kRle: return Imf::RLE_COMPRESSION;
+    case ExrCompression::kZips: return Imf::ZIPS_COMPRESSION;
+    case ExrCompression::kZip: break;
+    case ExrCompression::kPiz: return Imf::PIZ_COMPRESSION;
+  }
+  return Imf::ZIP_COMPRESSION;
+}
+
+}  // namespace
+
+ExrCompression exr_compression_named(const std::string& name) {
+  if (name == "none") return ExrCompression::kNone;
+  if (name == "rle") return ExrCompression::kRle;
+  if (name == "zips") return ExrCompression::kZips;
+  if (name == "zip") return ExrCompression::kZip;
+  if (name == "piz") return ExrCompression::kPiz;
+  throw UsageError("--exr-compression " + name + ": unknown (none, rle, zips, zip or piz)");
+}
+
 void write_exr(const std::string& path, const cv::Mat& rgb, const ExrWriteOptions& options) {
   CV_Assert(rgb.type() == CV_32FC3 && rgb.isContinuous());
   try {
     Imf::Header header(rgb.cols, rgb.rows);
-    header.compression() = Imf::ZIP_COMPRESSION;
+    header.compression() = imf_compression(options.compression);
     const Imf::PixelType type = options.half ? Imf::HALF : Imf::FLOAT;
     for (const char* name : {"R", "G", "B"}) header.channels().insert(name, Imf::Channel(type));
     Imf::addChromaticities(header, to_imf(rec709_chromaticities()));

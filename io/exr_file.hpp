@@ -38,14 +38,24 @@ using ExrRowsHook = std::function<void(const ExrImage& image, cv::Mat rows)>;
 ExrImage read_exr(const std::string& path, std::int64_t max_pixels, const std::string& layer = "",
                   const ExrRowsHook& on_rows = {});
 
+// OpenEXR's lossless compressions. On float output, ZIP (the default) saves
+// about a sixth of the bytes and is by far the slowest to write
+// (docs/usage.md gives the figures).
+enum class ExrCompression { kNone, kRle, kZips, kZip, kPiz };
+
+// The names --exr-compression takes (none, rle, zips, zip, piz); anything
+// else is a UsageError naming it.
+ExrCompression exr_compression_named(const std::string& name);
+
 struct ExrWriteOptions {
   bool half = true;
   std::optional<double> white_luminance;
   std::optional<double> frames_per_second;
+  ExrCompression compression = ExrCompression::kZip;
 };
 
-// Writes a CV_32FC3 RGB image to `path` (ZIP compression). The caller makes
-// the file atomic (see StagedFile) when it matters.
+// Writes a CV_32FC3 RGB image to `path`. The caller makes the file atomic
+// (see StagedFile) when it matters.
 void write_exr(const std::string& path, const cv::Mat& rgb, const ExrWriteOptions& options);
 
 // Writes named single-channel float planes (CV_32F, one size) to one EXR

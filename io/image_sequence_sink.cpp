@@ -12,12 +12,13 @@
 namespace eyestream::io {
 
 ImageSequenceSink::ImageSequenceSink(std::string pattern, ImageFormat format, std::int64_t first_number,
-                                     double frames_per_second, double png_gamma)
+                                     double frames_per_second, double png_gamma, ExrCompression exr_compression)
     : pattern_(std::move(pattern)),
       format_(format),
       first_number_(first_number),
       frames_per_second_(frames_per_second),
-      png_gamma_(png_gamma) {}
+      png_gamma_(png_gamma),
+      exr_compression_(exr_compression) {}
 
 SinkNeeds ImageSequenceSink::needs() const {
   switch (format_) {
@@ -47,8 +48,9 @@ void ImageSequenceSink::write(const DisplayFrame& frame) {
   StagedFile file(format_pattern(pattern_, number), kTag);
   if (format_ == ImageFormat::kExr) {
     write_exr(file.temp_path().string(), frame.linear,
-              ExrWriteOptions{false, std::nullopt, frames_per_second_ > 0 ? std::optional<double>(frames_per_second_)
-                                                                            : std::nullopt});
+              ExrWriteOptions{false, std::nullopt,
+                              frames_per_second_ > 0 ? std::optional<double>(frames_per_second_) : std::nullopt,
+                              exr_compression_});
   } else {
     cv::Mat bgr;
     cv::cvtColor(frame.code, bgr, cv::COLOR_RGB2BGR);

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "io/exr_file.hpp"
 #include "io/frame_sink.hpp"
 #include "io/staged_file.hpp"
 
@@ -21,7 +22,8 @@ class ImageSequenceSink : public FrameSink {
   // EXR frames carry frames_per_second (when > 0) as framesPerSecond.
   // PNG frames carry `png_gamma` (code = light^gamma) as their gAMA.
   ImageSequenceSink(std::string pattern, ImageFormat format, std::int64_t first_number = 0,
-                    double frames_per_second = 0.0, double png_gamma = 1.0 / 2.2);
+                    double frames_per_second = 0.0, double png_gamma = 1.0 / 2.2,
+                    ExrCompression exr_compression = ExrCompression::kZip);
   SinkNeeds needs() const override;
   void write(const DisplayFrame& frame) override;
   void finish() override;
@@ -37,6 +39,7 @@ class ImageSequenceSink : public FrameSink {
   std::int64_t first_number_;
   double frames_per_second_;
   double png_gamma_;
+  ExrCompression exr_compression_;
   std::vector<std::pair<std::int64_t, std::int64_t>> staged_;  // [first, last] numbers
   std::int64_t staged_count_ = 0;
   std::int64_t written_ = 0;

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "io/error.hpp"
+#include "io/exr_file.hpp"
 #include "io/frame_sequence.hpp"
 #include "io/image_sequence_sink.hpp"
 
@@ -28,7 +29,8 @@ std::unique_ptr<FrameSink> make_sink(const std::string& path, const SinkOptions&
   if (ext == ".png")
     return std::make_unique<ImageSequenceSink>(path, options.png_bits == 16 ? ImageFormat::kPng16 : ImageFormat::kPng8,
                                                0, 0.0, options.png_gamma);
-  return std::make_unique<ImageSequenceSink>(path, ImageFormat::kExr, 0, options.video.frames_per_second);
+  return std::make_unique<ImageSequenceSink>(path, ImageFormat::kExr, 0, options.video.frames_per_second, 1.0 / 2.2,
+                                             exr_compression_named(options.exr_compression));
 }
 
 SinkNeeds sink_needs(const std::string& path, const SinkOptions& options) {

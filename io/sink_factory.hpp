@@ -13,6 +13,7 @@ struct SinkOptions {
   VideoOptions video;
   int png_bits = 8;  // 8 or 16
   double png_gamma = 1.0 / 2.2;  // the display encoding's power, for PNG's gAMA
+  std::string exr_compression = "zip";  // io::exr_compression_named's names
 };
 
 // .mp4/.mkv -> video; "-" -> video on standard output (--format); .png ->

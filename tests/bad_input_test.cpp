@@ -88,7 +88,7 @@ TEST_F(BadInput, UnknownOption) { expect({"unknown option", 2, "--viewr-age"}, "
 
 // A command-line error is one line like every other refusal.
 TEST_F(BadInput, ACommandLineErrorIsOneErrorLine) {
-  for (const std::string args : {"run -i " + (dir_ / "f_%d.exr") + " -o " + (dir_ / "out.mp4") + " --viewr-age 25",
+  for (const std::string& args : {"run -i " + (dir_ / "f_%d.exr") + " -o " + (dir_ / "out.mp4") + " --viewr-age 25",
                                  std::string("run -i x.exr"), std::string("--frobnicate")}) {
     const auto r = test::run_eyestream(args);
     EXPECT_EQ(r.exit_code, 2) << args;

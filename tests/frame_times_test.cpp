@@ -47,7 +47,9 @@ TEST(FrameTimes, ThePrefetchingReaderAnswersForItsSource) {
     const std::optional<SceneFrame> f = source.next();
     ASSERT_TRUE(f.has_value());
     EXPECT_DOUBLE_EQ(*source.time_of(i), f->time_s);
-    if (i + 1 < 5) EXPECT_DOUBLE_EQ(*source.time_of(i + 1), (i + 1) / 30.0) << "known before it is taken";
+    if (i + 1 < 5) {
+      EXPECT_DOUBLE_EQ(*source.time_of(i + 1), (i + 1) / 30.0) << "known before it is taken";
+    }
   }
   EXPECT_FALSE(source.time_of(5).has_value());
 }

@@ -40,8 +40,9 @@ TEST(StateDensity, BalancedKeepsTwentySitesPerDegreeUpToHalfASitePerPixel) {
   for (const auto& c : cases) {
     const Plan p = plan_for("balanced", c.size.width, c.size.height);
     EXPECT_NEAR(p.retina.sites_per_pixel, c.sites_per_pixel, 0.001) << c.size;
-    if (p.retina.sites_per_pixel > 0.25 && p.retina.sites_per_pixel < 0.5)  // raised, not capped
+    if (p.retina.sites_per_pixel > 0.25 && p.retina.sites_per_pixel < 0.5) {  // raised, not capped
       EXPECT_NEAR(p.retina.sites_per_pixel * centre_ppd(p), 20.0, 1e-6) << c.size;
+    }
   }
 }
 

@@ -5,6 +5,8 @@
 // five 48x32 ones.
 #include <gtest/gtest.h>
 
+#include <array>
+
 extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
@@ -34,7 +36,7 @@ bool write_two_size_stream(const std::string& path) {
   const AVCodec* x264 = avcodec_find_encoder_by_name("libx264");
   AVPacket* packet = av_packet_alloc();
   std::int64_t pts = 0;
-  for (const int* size : {(const int[]){32, 24}, (const int[]){48, 32}}) {
+  for (const std::array<int, 2>& size : {std::array<int, 2>{32, 24}, std::array<int, 2>{48, 32}}) {
     AVCodecContext* c = avcodec_alloc_context3(x264);
     c->width = size[0];
     c->height = size[1];
