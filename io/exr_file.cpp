@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "io/error.hpp"
+#include "io/exr_chunks.hpp"
 #include "io/half_rows.hpp"
 #include "io/primaries.hpp"
 
@@ -180,7 +181,12 @@ ExrImage read_exr(const std::string& path, std::int64_t max_pixels, const std::s
       const Imf::Channel* c = header.channels().findChannel(prefix + name);
       halves = halves && c && c->type == Imf::HALF && c->xSampling == 1 && c->ySampling == 1;
     }
-    std::vector<std::uint16_t> stored(halves ? names.size() * size_t(band) * size_t(width) : 0);
+    // Halves in ZIP, ZIPS or uncompressed scanline chunks (most EXRs) are
+    // decoded by the program (exr_chunks.hpp), others by OpenEXR.
+    std::unique_ptr<ExrChunks> chunks = halves ? ExrChunks::open(file, path) : nullptr;
+    std::ptrdiff_t offsets[3] = {-1, -1, -1};
+    for (size_t c = 0; chunks && c < names.size(); ++c) offsets[c] = chunks->offset_of(prefix + names[c]);
+    std::vector<std::uint16_t> stored(halves && !chunks ? names.size() * size_t(band) * size_t(width) : 0);
     const size_t plane = size_t(band) * size_t(width);  // one channel's halves in a band
     if (!halves) {
       const size_t xs = 3 * sizeof(float), ys = xs * size_t(width);
@@ -192,6 +198,19 @@ ExrImage read_exr(const std::string& path, std::int64_t max_pixels, const std::s
     }
     for (int y0 = dw.min.y; y0 <= dw.max.y; y0 += band) {
       const int y1 = int(std::min<std::int64_t>(std::int64_t(y0) + band - 1, dw.max.y));
+      cv::Mat rows = image.rgb.rowRange(y0 - dw.min.y, y1 - dw.min.y + 1);
+      if (chunks) {
+        chunks->decode(y0, y1);
+        for (int y = 0; y < rows.rows; ++y) {
+          if (names.size() == 1)
+            halves_to_grey_rgb(chunks->samples(y0 + y, offsets[0]), rows.ptr<float>(y), int(width));
+          else
+            halves_to_rgb(chunks->samples(y0 + y, offsets[0]), chunks->samples(y0 + y, offsets[1]),
+                          chunks->samples(y0 + y, offsets[2]), rows.ptr<float>(y), int(width));
+        }
+        if (on_rows) on_rows(image, rows);
+        continue;
+      }
       if (halves) {
         const Imath::Box2i lines(Imath::V2i(dw.min.x, y0), Imath::V2i(dw.max.x, y1));
         Imf::FrameBuffer fb;
@@ -201,7 +220,6 @@ ExrImage read_exr(const std::string& path, std::int64_t max_pixels, const std::s
         file.setFrameBuffer(fb);
       }
       file.readPixels(y0, y1);
-      cv::Mat rows = image.rgb.rowRange(y0 - dw.min.y, y1 - dw.min.y + 1);
       if (halves) {
         for (int y = 0; y < rows.rows; ++y) {
           const size_t at = size_t(y) * size_t(width);

@@ -1,0 +1,217 @@
+// EXR chunks decoded by the program (io/exr_chunks.hpp) against OpenEXR's
+// own readPixels, computed here: files written by OpenEXR with ZIP, ZIPS
+// and no compression, half RGB with other channels beside them (alpha, a
+// float depth, an unsigned id, a layer), a data window off the origin,
+// widths and heights that are not whole chunks, lines stored bottom up,
+// smooth data and noise (whose chunks deflate cannot shrink and which are
+// stored as they are). Other layouts are left to OpenEXR, and a damaged
+// chunk is an InputError naming the file.
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfCompression.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <gtest/gtest.h>
+
+#include <Imath/half.h>
+
+#include <cstring>
+#include <fstream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "io/error.hpp"
+#include "io/exr_chunks.hpp"
+#include "io/exr_file.hpp"
+#include "tests/test_support.hpp"
+
+namespace eyestream::io {
+namespace {
+
+struct Layout {
+  Imf::Compression compression = Imf::ZIP_COMPRESSION;
+  int width = 37, height = 35;
+  Imath::V2i origin{0, 0};
+  std::vector<std::pair<std::string, Imf::PixelType>> channels = {
+      {"R", Imf::HALF}, {"G", Imf::HALF}, {"B", Imf::HALF}};
+  bool noise = false;
+  Imf::LineOrder order = Imf::INCREASING_Y;
+};
+
+// The value of channel c at (x, y): smooth, or noise.
+float sample(const Layout& l, int c, int x, int y) {
+  if (l.noise) {  // a finite half of random bits: nearly 16 bits of entropy
+    std::mt19937 rng(unsigned(((c * 7919 + y) * 104729) + x));
+    unsigned short bits = static_cast<unsigned short>(rng());
+    if (((bits >> 10) & 31) == 31) bits &= 0xBFFF;  // not infinite or NaN
+    Imath::half h;
+    h.setBits(bits);
+    return float(h);
+  }
+  return 0.01f * float(x + 1) * float(c + 1) + 3.0f * float(y);
+}
+
+void write(const std::string& path, const Layout& l) {
+  const Imath::Box2i dw(l.origin, l.origin + Imath::V2i(l.width - 1, l.height - 1));
+  Imf::Header header(dw, dw);
+  header.compression() = l.compression;
+  header.lineOrder() = l.order;
+  for (const auto& [name, type] : l.channels) header.channels().insert(name, Imf::Channel(type));
+  std::vector<std::vector<char>> planes;
+  Imf::FrameBuffer fb;
+  for (size_t c = 0; c < l.channels.size(); ++c) {
+    const Imf::PixelType type = l.channels[c].second;
+    const size_t bytes = type == Imf::HALF ? 2 : 4;
+    planes.emplace_back(size_t(l.width) * size_t(l.height) * bytes);
+    for (int y = 0; y < l.height; ++y)
+      for (int x = 0; x < l.width; ++x) {
+        char* at = planes.back().data() + (size_t(y) * size_t(l.width) + size_t(x)) * bytes;
+        const float v = sample(l, int(c), x, y);
+        if (type == Imf::HALF) {
+          const Imath::half h(v);
+          std::memcpy(at, &h, 2);
+        } else if (type == Imf::FLOAT) {
+          std::memcpy(at, &v, 4);
+        } else {
+          const unsigned u = unsigned(v);
+          std::memcpy(at, &u, 4);
+        }
+      }
+    fb.insert(l.channels[c].first, Imf::Slice::Make(type, planes.back().data(), dw, bytes, bytes * size_t(l.width)));
+  }
+  Imf::OutputFile file(path.c_str(), header);
+  file.setFrameBuffer(fb);
+  file.writePixels(l.height);
+}
+
+// Channel `name` as OpenEXR's readPixels gives it, converted to float.
+std::vector<float> read_by_openexr(const std::string& path, const std::string& name) {
+  Imf::InputFile file(path.c_str());
+  const Imath::Box2i dw = file.header().dataWindow();
+  const size_t w = size_t(dw.max.x - dw.min.x + 1), h = size_t(dw.max.y - dw.min.y + 1);
+  std::vector<float> v(w * h);
+  Imf::FrameBuffer fb;
+  fb.insert(name, Imf::Slice::Make(Imf::FLOAT, v.data(), dw, sizeof(float), sizeof(float) * w));
+  file.setFrameBuffer(fb);
+  file.readPixels(dw.min.y, dw.max.y);
+  return v;
+}
+
+// read_exr's frame against readPixels' R, G and B (Y for all three when
+// the file has only Y).
+void expect_read_exr_is_openexrs(const std::string& path, const std::string& what, const std::string& prefix = "",
+                                 const std::string& layer = "") {
+  const ExrImage image = read_exr(path, 1 << 24, layer);
+  const bool grey = image.channels == "Y";
+  for (int c = 0; c < 3; ++c) {
+    const std::vector<float> want = read_by_openexr(path, prefix + (grey ? "Y" : std::string(1, "RGB"[c])));
+    size_t differ = 0;
+    for (int y = 0; y < image.rgb.rows; ++y)
+      for (int x = 0; x < image.rgb.cols; ++x) {
+        const float got = image.rgb.at<cv::Vec3f>(y, x)[c];
+        const float w = want[size_t(y) * size_t(image.rgb.cols) + size_t(x)];
+        differ += std::memcmp(&got, &w, sizeof got) != 0;
+      }
+    EXPECT_EQ(differ, 0u) << what << ", channel " << c;
+  }
+}
+
+TEST(ExrChunks, FramesAreOpenExrsOwnSamplesForEveryLayoutItDecodes) {
+  test::ScratchDir dir;
+  int files = 0;
+  for (Imf::Compression compression : {Imf::ZIP_COMPRESSION, Imf::ZIPS_COMPRESSION, Imf::NO_COMPRESSION})
+    for (bool noise : {false, true})
+      for (int variant = 0; variant < 5; ++variant) {
+        Layout l;
+        l.compression = compression;
+        l.noise = noise;
+        std::string what = "compression " + std::to_string(int(compression)) + (noise ? ", noise" : ", smooth");
+        if (variant == 1) {  // alpha, depth and an id beside the colour; off the origin; one line
+          l.channels = {{"A", Imf::HALF}, {"B", Imf::HALF}, {"G", Imf::HALF}, {"R", Imf::HALF}, {"Z", Imf::FLOAT},
+                        {"id", Imf::UINT}};
+          l.origin = Imath::V2i(-5, -17);
+          what += ", RGBA Z id at (-5, -17)";
+        } else if (variant == 2) {  // a whole number of ZIP chunks, lines bottom up
+          l.width = 64;
+          l.height = 48;
+          l.order = Imf::DECREASING_Y;
+          what += ", 64x48 decreasing";
+        } else if (variant == 3) {  // grey
+          l.channels = {{"Y", Imf::HALF}};
+          l.height = 1;
+          what += ", Y, one line";
+        } else if (variant == 4) {  // a layer beside the root's
+          l.channels = {{"R", Imf::HALF}, {"G", Imf::HALF}, {"B", Imf::HALF}, {"diffuse.B", Imf::HALF},
+                        {"diffuse.G", Imf::HALF}, {"diffuse.R", Imf::HALF}};
+          l.width = 1;
+          l.height = 33;
+          what += ", a diffuse layer, 1x33";
+        }
+        const std::string path = dir / ("f" + std::to_string(files++) + ".exr");
+        write(path, l);
+        {
+          Imf::InputFile file(path.c_str());
+          EXPECT_NE(ExrChunks::open(file, path), nullptr) << what << ": decoded by the program";
+        }
+        expect_read_exr_is_openexrs(path, what);
+        if (variant == 4) expect_read_exr_is_openexrs(path, what + ", diffuse", "diffuse.", "diffuse");
+      }
+}
+
+TEST(ExrChunks, IncompressibleChunksAreStoredAsTheyAreAndReadSo) {
+  // Noise in halves across the whole range: ZIP cannot shrink it, so
+  // OpenEXR stores the chunks raw; the smooth file's are deflated.
+  test::ScratchDir dir;
+  Layout noise;
+  noise.noise = true;
+  noise.width = 200;
+  write(dir / "noise.exr", noise);
+  Layout smooth = noise;
+  smooth.noise = false;
+  write(dir / "smooth.exr", smooth);
+  const size_t raw = size_t(noise.width) * size_t(noise.height) * 6;
+  EXPECT_GT(std::filesystem::file_size(dir / "noise.exr"), raw) << "stored, not deflated";
+  EXPECT_LT(std::filesystem::file_size(dir / "smooth.exr"), raw / 2) << "deflated";
+  expect_read_exr_is_openexrs(dir / "noise.exr", "noise");
+  expect_read_exr_is_openexrs(dir / "smooth.exr", "smooth");
+}
+
+TEST(ExrChunks, OtherLayoutsAreLeftToOpenExr) {
+  test::ScratchDir dir;
+  Layout piz;
+  piz.compression = Imf::PIZ_COMPRESSION;
+  write(dir / "piz.exr", piz);
+  Layout floats;
+  floats.channels = {{"R", Imf::FLOAT}, {"G", Imf::FLOAT}, {"B", Imf::FLOAT}};
+  write(dir / "float.exr", floats);
+  {
+    Imf::InputFile file((dir / "piz.exr").c_str());
+    EXPECT_EQ(ExrChunks::open(file, dir / "piz.exr"), nullptr);
+  }
+  expect_read_exr_is_openexrs(dir / "piz.exr", "PIZ");
+  expect_read_exr_is_openexrs(dir / "float.exr", "float");
+}
+
+TEST(ExrChunks, ADamagedChunkIsAnInputErrorNamingTheFile) {
+  test::ScratchDir dir;
+  Layout l;
+  l.width = 300;
+  l.height = 40;
+  const std::string path = dir / "damaged.exr";
+  write(path, l);
+  std::string bytes = test::read_bytes(path);
+  // The last chunk's deflated bytes (the file's tail): overwritten.
+  for (size_t i = bytes.size() - 200; i < bytes.size() - 20; ++i) bytes[i] = char(0x5A ^ i);
+  std::ofstream(path, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
+  try {
+    read_exr(path, 1 << 24);
+    ADD_FAILURE() << "read a damaged chunk";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace eyestream::io
