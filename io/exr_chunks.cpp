@@ -5,6 +5,8 @@
 #include <OpenEXR/ImfPartType.h>
 #include <zlib.h>
 
+#include <opencv2/core.hpp>
+
 #include <algorithm>
 #include <cstring>
 
@@ -12,6 +14,9 @@
 #include "io/exr_zip_bytes.hpp"
 
 namespace eyestream::io {
+
+// The samples are used as stored: little-endian, as on x86-64 and AArch64.
+static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "EXR samples are little-endian");
 
 std::unique_ptr<ExrChunks> ExrChunks::open(Imf::InputFile& file, const std::string& path) {
   const Imf::Header& header = file.header();
@@ -44,34 +49,34 @@ std::ptrdiff_t ExrChunks::offset_of(const std::string& name) const {
   return -1;
 }
 
-void ExrChunks::decode(int y0, int y1) {
-  first_line_ = y0;
-  line_.resize((size_t(y1 - y0 + 1) * line_bytes_ + 1) / 2);
-  unsigned char* lines = reinterpret_cast<unsigned char*>(line_.data());
-  for (int y = y0; y <= y1; y += lines_per_chunk_) {
-    const int count = std::min(lines_per_chunk_, max_y_ - y + 1);
-    const size_t expected = size_t(count) * line_bytes_;
-    const char* data = nullptr;
-    int size = 0;
-    file_.rawPixelData(y, data, size);
-    unsigned char* out = lines + size_t(y - y0) * line_bytes_;
-    // A chunk that deflate would not have made smaller is stored as it is.
-    if (size_t(size) == expected) {
-      std::memcpy(out, data, expected);
-      continue;
-    }
-    if (compression_ == Imf::NO_COMPRESSION || size <= 0 || size_t(size) > expected)
-      throw InputError(path_ + ": cannot read EXR: the chunk at line " + std::to_string(y) + " holds " +
-                       std::to_string(size) + " bytes for " + std::to_string(expected));
-    inflated_.resize(expected);
-    uLongf length = uLongf(expected);
-    if (uncompress(inflated_.data(), &length, reinterpret_cast<const Bytef*>(data), uLong(size)) != Z_OK ||
-        length != expected)
-      throw InputError(path_ + ": cannot read EXR: the chunk at line " + std::to_string(y) +
-                       " does not inflate to its lines' " + std::to_string(expected) + " bytes");
-    undo_zip_predictor(inflated_.data(), expected);
-    undo_zip_reorder(inflated_.data(), out, expected);
+int ExrChunks::decode(int y) {
+  CV_Assert(y >= min_y_ && y <= max_y_ && (y - min_y_) % lines_per_chunk_ == 0);
+  first_line_ = y;
+  const int count = std::min(lines_per_chunk_, max_y_ - y + 1);
+  const size_t expected = size_t(count) * line_bytes_;
+  line_.resize((expected + 1) / 2);
+  unsigned char* out = reinterpret_cast<unsigned char*>(line_.data());
+  const char* data = nullptr;
+  int size = 0;
+  file_.rawPixelData(y, data, size);
+  // As OpenEXR: a chunk no smaller than its lines' bytes is stored as it
+  // is (deflate would not have made it smaller); its first bytes are read.
+  if (size > 0 && size_t(size) >= expected) {
+    std::memcpy(out, data, expected);
+    return count;
   }
+  if (compression_ == Imf::NO_COMPRESSION || size <= 0)
+    throw InputError(path_ + ": cannot read EXR: the chunk at line " + std::to_string(y) + " holds " +
+                     std::to_string(size) + " bytes for " + std::to_string(expected));
+  inflated_.resize(expected);
+  uLongf length = uLongf(expected);
+  if (uncompress(inflated_.data(), &length, reinterpret_cast<const Bytef*>(data), uLong(size)) != Z_OK ||
+      length != expected)
+    throw InputError(path_ + ": cannot read EXR: the chunk at line " + std::to_string(y) +
+                     " does not inflate to its lines' " + std::to_string(expected) + " bytes");
+  undo_zip_predictor(inflated_.data(), expected);
+  undo_zip_reorder(inflated_.data(), out, expected);
+  return count;
 }
 
 }  // namespace eyestream::io

@@ -27,16 +27,21 @@ class ExrChunks {
   // left to readPixels). `path` names the file in errors.
   static std::unique_ptr<ExrChunks> open(Imf::InputFile& file, const std::string& path);
 
-  // Decodes the data window's lines [y0, y1], which start at a chunk's
-  // first line. InputError naming the file and the line when a chunk is
-  // not the size its lines need.
-  void decode(int y0, int y1);
+  // Lines a chunk holds (ZIP 16, ZIPS and none 1; the data window's last
+  // chunk may hold fewer).
+  int lines_per_chunk() const { return lines_per_chunk_; }
+
+  // Decodes the chunk whose first line is y (the data window's first line
+  // plus a whole number of chunks) and returns how many lines it holds:
+  // one chunk's bytes at a time, as OpenEXR holds them. InputError naming
+  // the file and the line when a chunk does not inflate to its lines.
+  int decode(int y);
 
   // Where channel `name`'s samples of a line start in that line's bytes;
   // -1 for a channel the file does not have.
   std::ptrdiff_t offset_of(const std::string& name) const;
 
-  // Line y's bytes (within the last decode) at `offset`: the channel's
+  // Line y's bytes (within the last decoded chunk) at `offset`: the channel's
   // samples as stored (little-endian halves, floats or unsigned ints).
   // 2-byte aligned.
   const std::uint16_t* samples(int y, std::ptrdiff_t offset) const {
@@ -53,8 +58,8 @@ class ExrChunks {
   int min_y_ = 0, max_y_ = 0;
   size_t line_bytes_ = 0;
   std::vector<std::pair<std::string, size_t>> offsets_;  // each channel's offset in a line
-  int first_line_ = 0;                                   // of the last decode
-  std::vector<std::uint16_t> line_;                      // the decoded lines (2-byte samples or halves of 4-byte ones)
+  int first_line_ = 0;                                   // of the last decoded chunk
+  std::vector<std::uint16_t> line_;                      // its lines (2-byte samples or halves of 4-byte ones)
   std::vector<unsigned char> inflated_;                  // one chunk, before its byte order is undone
 };
 

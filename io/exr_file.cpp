@@ -199,14 +199,18 @@ ExrImage read_exr(const std::string& path, std::int64_t max_pixels, const std::s
     for (int y0 = dw.min.y; y0 <= dw.max.y; y0 += band) {
       const int y1 = int(std::min<std::int64_t>(std::int64_t(y0) + band - 1, dw.max.y));
       cv::Mat rows = image.rgb.rowRange(y0 - dw.min.y, y1 - dw.min.y + 1);
-      if (chunks) {
-        chunks->decode(y0, y1);
-        for (int y = 0; y < rows.rows; ++y) {
-          if (names.size() == 1)
-            halves_to_grey_rgb(chunks->samples(y0 + y, offsets[0]), rows.ptr<float>(y), int(width));
-          else
-            halves_to_rgb(chunks->samples(y0 + y, offsets[0]), chunks->samples(y0 + y, offsets[1]),
-                          chunks->samples(y0 + y, offsets[2]), rows.ptr<float>(y), int(width));
+      if (chunks) {  // the band's chunks one at a time (a band is whole chunks)
+        for (int y = y0; y <= y1;) {
+          const int end = y + chunks->decode(y);
+          CV_Assert(end <= y1 + 1);
+          for (; y < end; ++y) {
+            float* out = rows.ptr<float>(y - y0);
+            if (names.size() == 1)
+              halves_to_grey_rgb(chunks->samples(y, offsets[0]), out, int(width));
+            else
+              halves_to_rgb(chunks->samples(y, offsets[0]), chunks->samples(y, offsets[1]),
+                            chunks->samples(y, offsets[2]), out, int(width));
+          }
         }
         if (on_rows) on_rows(image, rows);
         continue;

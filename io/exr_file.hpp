@@ -38,9 +38,9 @@ using ExrRowsHook = std::function<void(const ExrImage& image, cv::Mat rows)>;
 ExrImage read_exr(const std::string& path, std::int64_t max_pixels, const std::string& layer = "",
                   const ExrRowsHook& on_rows = {});
 
-// OpenEXR's lossless compressions. On float output, ZIP (the default) saves
-// about a sixth of the bytes and is by far the slowest to write
-// (docs/usage.md gives the figures).
+// OpenEXR's lossless compressions. On float output, ZIP (the default)
+// saves about a seventh of the bytes and writes several times slower than
+// none (docs/usage.md gives the figures).
 enum class ExrCompression { kNone, kRle, kZips, kZip, kPiz };
 
 // The names --exr-compression takes (none, rle, zips, zip, piz); anything

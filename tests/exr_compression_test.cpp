@@ -29,13 +29,12 @@ ExrContents read_with_openexr(const std::string& path) {
   ExrContents c;
   c.compression = file.header().compression();
   c.rgb.assign(size_t(width) * size_t(height) * 3, -1.0f);
-  char* base = reinterpret_cast<char*>(c.rgb.data()) -
-               (size_t(dw.min.y) * size_t(width) + size_t(dw.min.x)) * 3 * sizeof(float);
+  char* base = reinterpret_cast<char*>(c.rgb.data());
   Imf::FrameBuffer fb;
   const size_t xs = 3 * sizeof(float), ys = xs * size_t(width);
-  fb.insert("R", Imf::Slice(Imf::FLOAT, base, xs, ys));
-  fb.insert("G", Imf::Slice(Imf::FLOAT, base + sizeof(float), xs, ys));
-  fb.insert("B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), xs, ys));
+  fb.insert("R", Imf::Slice::Make(Imf::FLOAT, base, dw, xs, ys));
+  fb.insert("G", Imf::Slice::Make(Imf::FLOAT, base + sizeof(float), dw, xs, ys));
+  fb.insert("B", Imf::Slice::Make(Imf::FLOAT, base + 2 * sizeof(float), dw, xs, ys));
   file.setFrameBuffer(fb);
   file.readPixels(dw.min.y, dw.max.y);
   return c;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <opencv2/imgproc.hpp>
 
 #include "retina/gaussian_blur.hpp"
@@ -49,6 +50,53 @@ TEST(GaussianBlur, IsTheDirectSumAtAPixel) {
                     src.at<float>(std::clamp(p.y + j, 0, src.rows - 1), std::clamp(p.x + i, 0, src.cols - 1));
     EXPECT_NEAR(out.at<float>(p), expected, 1e-3 * std::abs(expected)) << p;
   }
+}
+
+// The blur's sums as their definition, a float at a time: the row sweep
+// w0 c + w1 (l1 + r1) + w2 (l2 + r2) ... (terms in that order, borders
+// replicated), then the same down the swept rows; the weights are OpenCV's
+// float kernel's, as the blur's.
+cv::Mat blur_by_definition(const cv::Mat& src, double sigma) {
+  const int ksize = cvRound(sigma * 8 + 1) | 1, r = ksize / 2, ch = src.channels();
+  const cv::Mat k = cv::getGaussianKernel(ksize, sigma, CV_64F);
+  std::vector<float> w(size_t(r) + 1);
+  for (int t = 0; t <= r; ++t) w[size_t(t)] = float(k.at<double>(r + t));
+  cv::Mat across(src.size(), src.type()), out(src.size(), src.type());
+  for (int y = 0; y < src.rows; ++y)
+    for (int x = 0; x < src.cols; ++x)
+      for (int c = 0; c < ch; ++c) {
+        const float* row = src.ptr<float>(y);
+        float sum = w[0] * row[x * ch + c];
+        for (int t = 1; t <= r; ++t)
+          sum += w[size_t(t)] * (row[std::max(x - t, 0) * ch + c] + row[std::min(x + t, src.cols - 1) * ch + c]);
+        across.ptr<float>(y)[x * ch + c] = sum;
+      }
+  for (int y = 0; y < src.rows; ++y)
+    for (int i = 0; i < src.cols * ch; ++i) {
+      float sum = w[0] * across.ptr<float>(y)[i];
+      for (int t = 1; t <= r; ++t)
+        sum += w[size_t(t)] *
+               (across.ptr<float>(std::max(y - t, 0))[i] + across.ptr<float>(std::min(y + t, src.rows - 1))[i]);
+      out.ptr<float>(y)[i] = sum;
+    }
+  return out;
+}
+
+TEST(GaussianBlur, IsItsDefinitionBitForBit) {
+  // Rows shorter and longer than the sweeps' blocks of 32 samples, around
+  // the kernel's reach, with 1 to 4 channels: every sample's bits.
+  for (const double sigma : {0.6, 2.5})
+    for (int ch = 1; ch <= 4; ++ch) {
+      const int r = (cvRound(sigma * 8 + 1) | 1) / 2;
+      for (const int width : {1, 7, 31, 32, 33, 2 * r + 32 / ch, 2 * r + 65, 150}) {
+        const cv::Mat src = random_image(2 * r + 9, width, CV_32FC(ch), width + ch);
+        cv::Mat ours;
+        gaussian_blur(src, ours, sigma);
+        const cv::Mat want = blur_by_definition(src, sigma);
+        EXPECT_EQ(std::memcmp(ours.data, want.data, want.total() * want.elemSize()), 0)
+            << "sigma " << sigma << ", " << ch << " channels, width " << width;
+      }
+    }
 }
 
 TEST(GaussianBlur, InPlaceAndAnyThreadCountGiveTheSameBytes) {

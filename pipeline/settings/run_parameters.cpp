@@ -250,7 +250,7 @@ ParamSet run_parameters(Settings& s) {
                out, &s.sink.video.sliced_threads));
   set.add(choice("png-bits", "PNG bit depth", out, &s.sink.png_bits, {"8", "16"}));
   set.add(choice("exr-compression",
-                 "EXR frames' lossless compression: zip keeps float output's files about a sixth smaller than none, "
+                 "EXR frames' lossless compression: zip keeps float output's files about a seventh smaller than none, "
                  "none writes them many times faster (docs/usage.md)",
                  out, &s.sink.exr_compression, {"zip", "zips", "piz", "rle", "none"}));
   // Report.
