@@ -3,6 +3,7 @@
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfPartType.h>
+#include <OpenEXR/ImfVersion.h>
 #include <zlib.h>
 
 #include <opencv2/core.hpp>
@@ -21,6 +22,7 @@ static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "EXR samples are little
 std::unique_ptr<ExrChunks> ExrChunks::open(Imf::InputFile& file, const std::string& path) {
   const Imf::Header& header = file.header();
   if (header.hasTileDescription() || !file.isComplete()) return nullptr;  // a missing chunk: readPixels says which
+  if (Imf::isMultiPart(file.version())) return nullptr;  // each chunk also names its part
   if (header.hasType() && header.type() != Imf::SCANLINEIMAGE) return nullptr;
   const Imf::Compression c = header.compression();
   if (c != Imf::ZIP_COMPRESSION && c != Imf::ZIPS_COMPRESSION && c != Imf::NO_COMPRESSION) return nullptr;

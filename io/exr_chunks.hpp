@@ -22,9 +22,9 @@ namespace eyestream::io {
 
 class ExrChunks {
  public:
-  // Null unless `file` is a scanline image with ZIP, ZIPS or no
-  // compression whose channels are all sampled at every pixel (others are
-  // left to readPixels). `path` names the file in errors.
+  // Null unless `file` is a single-part scanline image with ZIP, ZIPS or
+  // no compression whose channels are all sampled at every pixel (others
+  // are left to readPixels). `path` names the file in errors.
   static std::unique_ptr<ExrChunks> open(Imf::InputFile& file, const std::string& path);
 
   // Lines a chunk holds (ZIP 16, ZIPS and none 1; the data window's last

@@ -11,6 +11,9 @@
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfMultiPartOutputFile.h>
+#include <OpenEXR/ImfOutputPart.h>
+#include <OpenEXR/ImfPartType.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <gtest/gtest.h>
 
@@ -43,7 +46,7 @@ struct Layout {
 // The value of channel c at (x, y): smooth, or noise.
 float sample(const Layout& l, int c, int x, int y) {
   if (l.noise) {  // a finite half of random bits: nearly 16 bits of entropy
-    std::mt19937 rng(unsigned(((c * 7919 + y) * 104729) + x));
+    std::mt19937 rng((unsigned(c) * 7919u + unsigned(y)) * 104729u + unsigned(x));  // unsigned: wraps, no overflow
     unsigned short bits = static_cast<unsigned short>(rng());
     if (((bits >> 10) & 31) == 31) bits &= 0xBFFF;  // not infinite or NaN
     Imath::half h;
@@ -203,6 +206,37 @@ TEST(ExrChunks, OtherLayoutsAreLeftToOpenExr) {
     EXPECT_EQ(ExrChunks::open(file, dir / "piz.exr"), nullptr);
   }
   expect_read_exr_is_openexrs(dir / "piz.exr", "PIZ");
+  // Two parts (each chunk of a multi-part file also names its part): the
+  // first is read, by OpenEXR.
+  {
+    Layout part;
+    std::vector<Imf::Header> headers;
+    for (const char* name : {"left", "right"}) {
+      Imf::Header h(part.width, part.height);
+      h.compression() = Imf::ZIP_COMPRESSION;
+      h.setName(name);
+      h.setType(Imf::SCANLINEIMAGE);
+      for (const char* c : {"R", "G", "B"}) h.channels().insert(c, Imf::Channel(Imf::HALF));
+      headers.push_back(h);
+    }
+    Imf::MultiPartOutputFile out((dir / "parts.exr").c_str(), headers.data(), int(headers.size()));
+    for (int p = 0; p < 2; ++p) {
+      std::vector<Imath::half> rgb(size_t(part.width) * size_t(part.height) * 3);
+      for (size_t i = 0; i < rgb.size(); ++i) rgb[i] = float(i % 97) * (p + 1.0f);
+      Imf::FrameBuffer fb;
+      for (int c = 0; c < 3; ++c)
+        fb.insert(std::string(1, "RGB"[c]), Imf::Slice(Imf::HALF, reinterpret_cast<char*>(rgb.data() + c), 6,
+                                                       6 * size_t(part.width)));
+      Imf::OutputPart writer(out, p);
+      writer.setFrameBuffer(fb);
+      writer.writePixels(part.height);
+    }
+  }
+  {
+    Imf::InputFile file((dir / "parts.exr").c_str());
+    EXPECT_EQ(ExrChunks::open(file, dir / "parts.exr"), nullptr);
+  }
+  expect_read_exr_is_openexrs(dir / "parts.exr", "two parts");
   expect_read_exr_is_openexrs(dir / "float.exr", "float");
 }
 
