@@ -27,12 +27,9 @@ class ExrChunks {
   // are left to readPixels). `path` names the file in errors.
   static std::unique_ptr<ExrChunks> open(Imf::InputFile& file, const std::string& path);
 
-  // Lines a chunk holds (ZIP 16, ZIPS and none 1; the data window's last
-  // chunk may hold fewer).
-  int lines_per_chunk() const { return lines_per_chunk_; }
-
   // Decodes the chunk whose first line is y (the data window's first line
-  // plus a whole number of chunks) and returns how many lines it holds:
+  // plus a whole number of chunks: ZIP's hold 16 lines, the others' 1, the
+  // last may hold fewer) and returns how many lines it holds:
   // one chunk's bytes at a time, as OpenEXR holds them. InputError naming
   // the file and the line when a chunk does not inflate to its lines.
   int decode(int y);

@@ -27,9 +27,9 @@ inline void store_lanes(float* p, const Lanes& v) { std::memcpy(p, &v, sizeof v)
 // reload at every tap.
 constexpr int kBlock = 32;
 
-// The sums of samples [at, at + kBlock): w[0] centre + w[t] (before_t + after_t),
-// where tap t's neighbours are `step` t floats before and after (row) or
-// rows[-t] and rows[t] (column).
+// The sums of kBlock samples: w[0] centre + w[t] (before_t + after_t), tap
+// t's neighbours being t pixels before and after (row) or rows[-t] and
+// rows[t] (column), added one tap at a time.
 struct Block {
   Lanes sum[4];
   void start(float w0, const float* centre) {
