@@ -89,19 +89,6 @@ void write(const std::string& path, const Layout& l) {
   file.writePixels(l.height);
 }
 
-// Channel `name` as OpenEXR's readPixels gives it, converted to float.
-std::vector<float> read_by_openexr(const std::string& path, const std::string& name) {
-  Imf::InputFile file(path.c_str());
-  const Imath::Box2i dw = file.header().dataWindow();
-  const size_t w = size_t(dw.max.x - dw.min.x + 1), h = size_t(dw.max.y - dw.min.y + 1);
-  std::vector<float> v(w * h);
-  Imf::FrameBuffer fb;
-  fb.insert(name, Imf::Slice::Make(Imf::FLOAT, v.data(), dw, sizeof(float), sizeof(float) * w));
-  file.setFrameBuffer(fb);
-  file.readPixels(dw.min.y, dw.max.y);
-  return v;
-}
-
 // read_exr's frame against readPixels' R, G and B (Y for all three when
 // the file has only Y).
 void expect_read_exr_is_openexrs(const std::string& path, const std::string& what, const std::string& prefix = "",
@@ -109,7 +96,7 @@ void expect_read_exr_is_openexrs(const std::string& path, const std::string& wha
   const ExrImage image = read_exr(path, 1 << 24, layer);
   const bool grey = image.channels == "Y";
   for (int c = 0; c < 3; ++c) {
-    const std::vector<float> want = read_by_openexr(path, prefix + (grey ? "Y" : std::string(1, "RGB"[c])));
+    const std::vector<float> want = test::openexr_channel(path, prefix + (grey ? "Y" : std::string(1, "RGB"[c])));
     size_t differ = 0;
     for (int y = 0; y < image.rgb.rows; ++y)
       for (int x = 0; x < image.rgb.cols; ++x) {

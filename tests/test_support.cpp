@@ -1,5 +1,9 @@
 #include "tests/test_support.hpp"
 
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -68,6 +72,18 @@ pipeline::Plan plan_for(const pipeline::Settings& settings, int width, int heigh
   info.height = height;
   info.frames_per_second = fps;
   return pipeline::compile_plan(settings, info);
+}
+
+std::vector<float> openexr_channel(const std::string& path, const std::string& name) {
+  Imf::InputFile file(path.c_str());
+  const Imath::Box2i dw = file.header().dataWindow();
+  const size_t w = size_t(dw.max.x - dw.min.x + 1), h = size_t(dw.max.y - dw.min.y + 1);
+  std::vector<float> v(w * h);
+  Imf::FrameBuffer fb;
+  fb.insert(name, Imf::Slice::Make(Imf::FLOAT, v.data(), dw, sizeof(float), sizeof(float) * w));
+  file.setFrameBuffer(fb);
+  file.readPixels(dw.min.y, dw.max.y);
+  return v;
 }
 
 cv::Mat constant_frame(int width, int height, const cv::Vec3f& rgb) {

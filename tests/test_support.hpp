@@ -65,6 +65,11 @@ int count_entries(const std::filesystem::path& dir);
 // between folders a and b, or "" when all are the same.
 std::string first_differing_png(const std::filesystem::path& a, const std::filesystem::path& b, int frames);
 
+// Channel `name` of an EXR file as OpenEXR's own readPixels gives it,
+// converted to float, row by row over the data window: an oracle that
+// does not go through the project's reader.
+std::vector<float> openexr_channel(const std::string& path, const std::string& name);
+
 // A constant CV_32FC3 frame.
 cv::Mat constant_frame(int width, int height, const cv::Vec3f& rgb);
 
