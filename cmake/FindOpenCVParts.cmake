@@ -1,12 +1,15 @@
-# Finds the OpenCV component libraries eyestream uses (core, imgproc,
-# imgcodecs) from Debian's per-module -dev packages, which ship no CMake
-# package config. Defines the imported target OpenCVParts::OpenCVParts.
+# Finds the OpenCV component libraries eyestream uses from Debian's
+# per-module -dev packages, which ship no CMake package config: core and
+# imgproc for the program and library (the imported target
+# OpenCVParts::OpenCVParts), and imgcodecs for the tests only
+# (OpenCVParts::imgcodecs), which read and write pictures with it as an
+# oracle. The program does not link imgcodecs: its dependencies (GDAL and
+# about 120 libraries) cost each start about 0.15 s (docs/performance.md);
+# PNG goes through libpng (io/png_file.hpp).
 find_path(OpenCVParts_INCLUDE_DIR opencv2/core.hpp PATH_SUFFIXES opencv4)
 set(_parts core imgproc imgcodecs)
-set(OpenCVParts_LIBRARIES)
 foreach(part IN LISTS _parts)
   find_library(OpenCVParts_${part}_LIBRARY NAMES opencv_${part})
-  list(APPEND OpenCVParts_LIBRARIES ${OpenCVParts_${part}_LIBRARY})
 endforeach()
 include(FindPackageHandleStandardArgs)
 find_package_handle_standard_args(OpenCVParts REQUIRED_VARS
@@ -16,5 +19,9 @@ if(OpenCVParts_FOUND AND NOT TARGET OpenCVParts::OpenCVParts)
   add_library(OpenCVParts::OpenCVParts INTERFACE IMPORTED)
   set_target_properties(OpenCVParts::OpenCVParts PROPERTIES
     INTERFACE_INCLUDE_DIRECTORIES "${OpenCVParts_INCLUDE_DIR}"
-    INTERFACE_LINK_LIBRARIES "${OpenCVParts_LIBRARIES}")
+    INTERFACE_LINK_LIBRARIES "${OpenCVParts_core_LIBRARY};${OpenCVParts_imgproc_LIBRARY}")
+  add_library(OpenCVParts::imgcodecs INTERFACE IMPORTED)
+  set_target_properties(OpenCVParts::imgcodecs PROPERTIES
+    INTERFACE_INCLUDE_DIRECTORIES "${OpenCVParts_INCLUDE_DIR}"
+    INTERFACE_LINK_LIBRARIES "${OpenCVParts_imgcodecs_LIBRARY}")
 endif()

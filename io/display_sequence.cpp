@@ -2,11 +2,12 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "io/error.hpp"
 #include "io/exr_file.hpp"
+#include "io/float_tiff.hpp"
+#include "io/png_file.hpp"
 #include "io/staged_file.hpp"
 
 namespace eyestream::io {
@@ -23,17 +24,14 @@ bool is_image_path(const std::string& path) {
 
 bool is_exr(const std::string& path) { return lower_extension(path) == ".exr"; }
 
+// A PNG (png_file.hpp) or TIFF (float_tiff.hpp) frame's codes over their
+// largest value, R, G, B.
 cv::Mat read_code_image(const std::string& path) {
-  const cv::Mat img = cv::imread(path, cv::IMREAD_UNCHANGED);
-  if (img.empty()) throw InputError(path + ": cannot read the image");
-  if (img.depth() != CV_8U && img.depth() != CV_16U) throw InputError(path + ": expected 8- or 16-bit RGB");
-  cv::Mat rgb;
-  switch (img.channels()) {
-    case 1: cv::cvtColor(img, rgb, cv::COLOR_GRAY2RGB); break;
-    case 3: cv::cvtColor(img, rgb, cv::COLOR_BGR2RGB); break;
-    case 4: cv::cvtColor(img, rgb, cv::COLOR_BGRA2RGB); break;
-    default: throw InputError(path + ": unsupported channel count");
-  }
+  const std::string ext = lower_extension(path);
+  if (ext == ".tif" || ext == ".tiff") return read_code_tiff(path);
+  const cv::Mat img = read_png(path);
+  cv::Mat rgb = img;
+  if (img.channels() == 1) cv::cvtColor(img, rgb, cv::COLOR_GRAY2RGB);
   cv::Mat out;
   rgb.convertTo(out, CV_32FC3, img.depth() == CV_8U ? 1.0 / 255.0 : 1.0 / 65535.0);
   return out;

@@ -2,12 +2,13 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "io/error.hpp"
 #include "io/float_tiff.hpp"
 #include "io/float_image_header.hpp"
+#include "io/pfm_file.hpp"
+#include "io/radiance_hdr.hpp"
 #include "io/staged_file.hpp"
 
 namespace eyestream::io {
@@ -57,20 +58,12 @@ std::optional<SceneFrame> FloatImageSource::next() {
   if (declared.width * std::int64_t(declared.height) > options_.max_pixels)
     throw InputError(entry.path + ": " + std::to_string(declared.width) + "x" + std::to_string(declared.height) +
                      " exceeds the limit of " + std::to_string(options_.max_pixels) + " pixels (--max-pixels)");
-  // TIFF through libtiff (float_tiff.hpp); Radiance .hdr and PFM through OpenCV.
-  const bool tiff = lower_extension(entry.path) == ".tif" || lower_extension(entry.path) == ".tiff";
-  cv::Mat image;
-  if (tiff) {
-    image = read_float_tiff(entry.path);
-  } else {
-    try {
-      image = cv::imread(entry.path, cv::IMREAD_UNCHANGED);
-    } catch (const cv::Exception&) {
-      throw InputError(entry.path + ": cannot read as a floating-point RGB image");
-    }
-    if (image.empty() || image.depth() != CV_32F || (image.channels() != 3 && image.channels() != 1))
-      throw InputError(entry.path + ": cannot read as a floating-point RGB image");
-  }
+  // TIFF through libtiff (float_tiff.hpp), Radiance .hdr and PFM by their
+  // own readers: each gives R, G, B.
+  const std::string ext = lower_extension(entry.path);
+  const cv::Mat image = ext == ".tif" || ext == ".tiff" ? read_float_tiff(entry.path)
+                        : ext == ".pfm"                 ? read_pfm(entry.path, options_.max_pixels)
+                                                        : read_radiance_hdr(entry.path, options_.max_pixels);
   if (index == 0 && info_.width == 0) info_.width = image.cols, info_.height = image.rows;
   if (image.cols * std::int64_t(image.rows) > options_.max_pixels)
     throw InputError(entry.path + ": exceeds --max-pixels");
@@ -79,10 +72,7 @@ std::optional<SceneFrame> FloatImageSource::next() {
                      std::to_string(image.rows) + ", the sequence began at " + std::to_string(info_.width) + "x" +
                      std::to_string(info_.height));
   SceneFrame f;
-  if (tiff)
-    f.rgb = image;
-  else
-    cv::cvtColor(image, f.rgb, image.channels() == 1 ? cv::COLOR_GRAY2RGB : cv::COLOR_BGR2RGB);
+  f.rgb = image;
   const double scale = options_.scale.value_or(lower_extension(entry.path) == ".hdr" ? 179.0 : 1.0);
   if (scale != 1.0) f.rgb *= scale;
   f.index = index;

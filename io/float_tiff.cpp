@@ -23,17 +23,19 @@ struct TiffCloser {
   void operator()(TIFF* t) const { TIFFClose(t); }
 };
 
-// One sample as float, from 32- or 16-bit IEEE storage.
-float sample(const unsigned char* data, size_t index, int bits) {
+// One sample as float, from 32- or 16-bit IEEE storage, or from 8- or
+// 16-bit unsigned codes (`codes`) over their largest value.
+float sample(const unsigned char* data, size_t index, int bits, bool codes) {
+  if (codes)
+    return bits == 8 ? float(data[index]) * (1.0f / 255.0f)
+                     : float(reinterpret_cast<const std::uint16_t*>(data)[index]) * (1.0f / 65535.0f);
   if (bits == 32) return reinterpret_cast<const float*>(data)[index];
   Imath::half h;
   h.setBits(reinterpret_cast<const std::uint16_t*>(data)[index]);
   return float(h);
 }
 
-}  // namespace
-
-cv::Mat read_float_tiff(const std::string& path) {
+cv::Mat read_tiff(const std::string& path, bool codes) {
   static std::once_flag silenced;
   std::call_once(silenced, [] {
     TIFFSetErrorHandler(quiet);
@@ -54,7 +56,11 @@ cv::Mat read_float_tiff(const std::string& path) {
   if (photometric == PHOTOMETRIC_LOGLUV || photometric == PHOTOMETRIC_LOGL)
     throw InputError(path + ": a LogLuv TIFF (log-encoded CIE XYZ); eyestream reads 16- or 32-bit floating-point "
                             "RGB or grey TIFFs: convert it to float RGB first");
-  if (format != SAMPLEFORMAT_IEEEFP || (bits != 32 && bits != 16))
+  if (codes && (format != SAMPLEFORMAT_UINT || (bits != 8 && bits != 16)))
+    throw InputError(path + ": holds " + std::to_string(bits) + "-bit " +
+                     (format == SAMPLEFORMAT_IEEEFP ? "floating-point" : "signed or other") +
+                     " samples; display frames are read as 8- or 16-bit unsigned codes");
+  if (!codes && (format != SAMPLEFORMAT_IEEEFP || (bits != 32 && bits != 16)))
     throw InputError(path + ": holds " + std::to_string(bits) + "-bit " +
                      (format == SAMPLEFORMAT_IEEEFP ? "floating-point" : "integer") +
                      " samples; eyestream reads 16- or 32-bit floating-point TIFFs (linear light)");
@@ -98,10 +104,10 @@ cv::Mat read_float_tiff(const std::string& path) {
           for (std::uint32_t c = 0; c < cols; ++c) {
             const size_t at = (size_t(r) * unit_w + c) * size_t(per_pixel);
             if (planes > 1) {
-              if (plane < colour) out[c][plane] = sample(buffer.data(), at, bits);
+              if (plane < colour) out[c][plane] = sample(buffer.data(), at, bits, codes);
               if (colour == 1 && plane == 0) out[c][1] = out[c][2] = out[c][0];
             } else {
-              for (int k = 0; k < colour; ++k) out[c][k] = sample(buffer.data(), at + size_t(k), bits);
+              for (int k = 0; k < colour; ++k) out[c][k] = sample(buffer.data(), at + size_t(k), bits, codes);
               if (colour == 1) out[c][1] = out[c][2] = out[c][0];
             }
           }
@@ -109,5 +115,11 @@ cv::Mat read_float_tiff(const std::string& path) {
       }
   return rgb;
 }
+
+}  // namespace
+
+cv::Mat read_float_tiff(const std::string& path) { return read_tiff(path, false); }
+
+cv::Mat read_code_tiff(const std::string& path) { return read_tiff(path, true); }
 
 }  // namespace eyestream::io

@@ -2,7 +2,9 @@
 // 16-bit (half) IEEE samples, grey, grey + alpha, RGB or RGBA, strips or
 // tiles, interleaved or planar, any compression libtiff decodes. OpenCV's
 // reader refuses half floats and extra (alpha) samples and prints its own
-// lines on stderr before failing, so eyestream reads these itself.
+// lines on stderr before failing, so eyestream reads these itself; and,
+// since OpenCV's image codecs are no longer linked, 8- and 16-bit display
+// frames for `eyestream compare`.
 #pragma once
 
 #include <opencv2/core.hpp>
@@ -14,5 +16,9 @@ namespace eyestream::io {
 // copied to the three; alpha is dropped). InputError naming the file and
 // what it holds when the file is not a floating-point TIFF of that kind.
 cv::Mat read_float_tiff(const std::string& path);
+
+// A display frame's codes, 8- or 16-bit unsigned samples in the same
+// layouts, as CV_32FC3 over the codes' largest value (0 to 1).
+cv::Mat read_code_tiff(const std::string& path);
 
 }  // namespace eyestream::io

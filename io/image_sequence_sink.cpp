@@ -2,7 +2,6 @@
 
 #include "io/png_file.hpp"
 
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "io/error.hpp"

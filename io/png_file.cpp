@@ -1,64 +1,125 @@
 #include "io/png_file.hpp"
 
-#include <array>
+#include <png.h>
+#include <zlib.h>
+
 #include <cmath>
-#include <cstdint>
-#include <opencv2/imgcodecs.hpp>
-#include <vector>
+#include <csetjmp>
+#include <cstdio>
+#include <memory>
 
 #include "io/error.hpp"
-#include "io/staged_file.hpp"
 
 namespace eyestream::io {
 
 namespace {
 
-// CRC-32 of PNG chunks (ISO 3309, the polynomial 0xEDB88320, reflected).
-std::uint32_t crc32_of(const unsigned char* data, size_t n) {
-  static const std::array<std::uint32_t, 256> table = [] {
-    std::array<std::uint32_t, 256> t{};
-    for (std::uint32_t i = 0; i < 256; ++i) {
-      std::uint32_t c = i;
-      for (int k = 0; k < 8; ++k) c = (c & 1) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-      t[i] = c;
-    }
-    return t;
-  }();
-  std::uint32_t c = 0xFFFFFFFFu;
-  for (size_t i = 0; i < n; ++i) c = table[(c ^ data[i]) & 0xFF] ^ (c >> 8);
-  return c ^ 0xFFFFFFFFu;
+// libpng reports an error by longjmp to the setjmp in the function that
+// called it; these functions hold no C++ object with a destructor between
+// the setjmp and the calls that may jump, so nothing is skipped. Neither
+// errors nor warnings are printed: a failure is named by eyestream's own
+// line.
+void no_warning(png_structp, png_const_charp) {}
+[[noreturn]] void quiet_error(png_structp png, png_const_charp) { png_longjmp(png, 1); }
+
+void append_bytes(png_structp png, png_bytep data, png_size_t n) {
+  auto* out = static_cast<std::vector<unsigned char>*>(png_get_io_ptr(png));
+  out->insert(out->end(), data, data + n);
 }
 
-void put32(std::vector<unsigned char>& out, std::uint32_t v) {
-  for (int shift = 24; shift >= 0; shift -= 8) out.push_back(static_cast<unsigned char>(v >> shift));
+void no_flush(png_structp) {}
+
+// Writes the rows of `m` into `out`; false when libpng failed.
+bool write_rows(const cv::Mat& m, double gamma, std::vector<unsigned char>* out, png_bytep* rows) {
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, quiet_error, no_warning);
+  if (!png) return false;
+  png_infop info = png_create_info_struct(png);
+  if (!info || setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    return false;
+  }
+  png_set_write_fn(png, out, append_bytes, no_flush);
+  // OpenCV 4.6's settings when given no parameters.
+  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
+  png_set_compression_level(png, Z_BEST_SPEED);
+  png_set_compression_strategy(png, Z_RLE);
+  const int depth = m.depth() == CV_16U ? 16 : 8;
+  png_set_IHDR(png, info, png_uint_32(m.cols), png_uint_32(m.rows), depth,
+               m.channels() == 3 ? PNG_COLOR_TYPE_RGB : PNG_COLOR_TYPE_GRAY, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_BASE, PNG_FILTER_TYPE_BASE);
+  // The display encoding's power, and the Rec.709 primaries with D65, in
+  // units of 1e-5.
+  png_set_gAMA_fixed(png, info, png_fixed_point(std::lround(gamma * 100000)));
+  png_set_cHRM_fixed(png, info, 31270, 32900, 64000, 33000, 30000, 60000, 15000, 6000);
+  png_write_info(png, info);
+  if (m.channels() == 3) png_set_bgr(png);
+  if (depth == 16) png_set_swap(png);  // the samples are held little-endian
+  png_write_image(png, rows);
+  png_write_end(png, info);
+  png_destroy_write_struct(&png, &info);
+  return true;
 }
 
-// A chunk: length, type, data, CRC over type and data.
-std::vector<unsigned char> chunk(const char type[4], const std::vector<std::uint32_t>& words) {
-  std::vector<unsigned char> c;
-  put32(c, std::uint32_t(4 * words.size()));
-  c.insert(c.end(), type, type + 4);
-  for (std::uint32_t w : words) put32(c, w);
-  put32(c, crc32_of(c.data() + 4, c.size() - 4));
-  return c;
+struct FileCloser {
+  void operator()(std::FILE* f) const { std::fclose(f); }
+};
+
+struct Header {
+  png_uint_32 width = 0, height = 0;
+  int depth = 0, colour = 0;
+};
+
+// Reads the header, then the pixels into `pixels` (allocated by `allocate`
+// once the size is known and accepted); the message of the failure, or
+// empty.
+template <typename Allocate>
+std::string read_rows(std::FILE* file, Allocate&& allocate) {
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, quiet_error, no_warning);
+  if (!png) return "cannot start the PNG decoder";
+  png_infop info = png_create_info_struct(png);
+  const char* volatile failure = "not a PNG file, or a damaged one";  // volatile: read after a longjmp
+  if (!info || setjmp(png_jmpbuf(png))) {
+    png_destroy_read_struct(&png, &info, nullptr);
+    return failure;
+  }
+  png_init_io(png, file);
+  png_set_crc_action(png, PNG_CRC_DEFAULT, PNG_CRC_DEFAULT);
+  png_read_info(png, info);
+  Header h;
+  h.width = png_get_image_width(png, info);
+  h.height = png_get_image_height(png, info);
+  h.depth = png_get_bit_depth(png, info);
+  h.colour = png_get_color_type(png, info);
+  // Palettes to RGB, grey below 8 bits to 8, alpha dropped, 16-bit
+  // samples to the machine's order; interlaced images are put together.
+  if (h.colour == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
+  if (h.colour == PNG_COLOR_TYPE_GRAY && h.depth < 8) png_set_expand_gray_1_2_4_to_8(png);
+  if ((h.colour & PNG_COLOR_MASK_ALPHA) || png_get_valid(png, info, PNG_INFO_tRNS)) png_set_strip_alpha(png);
+  if (h.depth == 16) png_set_swap(png);
+  png_set_interlace_handling(png);
+  png_read_update_info(png, info);
+  png_bytep* rows = allocate(h, int(png_get_channels(png, info)), int(png_get_bit_depth(png, info)));
+  if (!rows) {
+    png_destroy_read_struct(&png, &info, nullptr);
+    return "";  // refused by the caller, which says why
+  }
+  failure = "damaged image data";
+  png_read_image(png, rows);
+  png_read_end(png, nullptr);
+  png_destroy_read_struct(&png, &info, nullptr);
+  return "";
 }
 
 }  // namespace
 
 std::vector<unsigned char> encode_png(const cv::Mat& bgr, double gamma) {
-  std::vector<unsigned char> png;
-  if (!cv::imencode(".png", bgr, png)) return {};
-  // After the signature (8 bytes) and IHDR (4 + 4 + 13 + 4): the display
-  // encoding's power (retina/display_encoding.hpp), and the Rec.709
-  // primaries with D65, in units of 1e-5.
-  constexpr size_t kAfterHeader = 8 + 25;
-  if (png.size() < kAfterHeader) return png;
-  const std::vector<unsigned char> gama = chunk("gAMA", {std::uint32_t(std::lround(gamma * 100000))});
-  const std::vector<unsigned char> chrm =
-      chunk("cHRM", {31270, 32900, 64000, 33000, 30000, 60000, 15000, 6000});
-  png.insert(png.begin() + kAfterHeader, chrm.begin(), chrm.end());
-  png.insert(png.begin() + kAfterHeader, gama.begin(), gama.end());
-  return png;
+  if (bgr.empty() || (bgr.depth() != CV_8U && bgr.depth() != CV_16U) || (bgr.channels() != 1 && bgr.channels() != 3))
+    return {};
+  std::vector<png_bytep> rows(size_t(bgr.rows));
+  for (int y = 0; y < bgr.rows; ++y) rows[size_t(y)] = const_cast<png_bytep>(bgr.ptr<png_byte>(y));
+  std::vector<unsigned char> out;
+  if (!write_rows(bgr, gamma, &out, rows.data())) return {};
+  return out;
 }
 
 StagedFile stage_png(const std::filesystem::path& path, const cv::Mat& bgr) {
@@ -70,5 +131,32 @@ StagedFile stage_png(const std::filesystem::path& path, const cv::Mat& bgr) {
 }
 
 void write_png(const std::filesystem::path& path, const cv::Mat& bgr) { stage_png(path, bgr).commit(); }
+
+cv::Mat read_png(const std::string& path, std::int64_t max_pixels) {
+  std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
+  if (!file) throw InputError(path + ": cannot open");
+  cv::Mat image;
+  std::vector<png_bytep> rows;
+  std::string refused;
+  const std::string failure = read_rows(file.get(), [&](const Header& h, int channels, int depth) -> png_bytep* {
+    if (h.width == 0 || h.height == 0 || h.width > 1000000 || h.height > 1000000 ||
+        std::int64_t(h.width) * std::int64_t(h.height) > max_pixels) {
+      refused = "a " + std::to_string(h.width) + "x" + std::to_string(h.height) + " PNG exceeds the limit of " +
+                std::to_string(max_pixels) + " pixels";
+      return nullptr;
+    }
+    if (channels != 1 && channels != 3) {
+      refused = "a PNG of " + std::to_string(channels) + " samples a pixel";
+      return nullptr;
+    }
+    image.create(int(h.height), int(h.width), CV_MAKETYPE(depth == 16 ? CV_16U : CV_8U, channels));
+    rows.resize(size_t(h.height));
+    for (int y = 0; y < image.rows; ++y) rows[size_t(y)] = image.ptr<png_byte>(y);
+    return rows.data();
+  });
+  if (!refused.empty()) throw InputError(path + ": " + refused);
+  if (!failure.empty()) throw InputError(path + ": " + failure);
+  return image;
+}
 
 }  // namespace eyestream::io

@@ -1,11 +1,11 @@
 #include "samples/scene_writer.hpp"
 
 #include <filesystem>
-#include <opencv2/imgcodecs.hpp>
 
 #include "io/exr_file.hpp"
 #include "io/frame_sequence.hpp"
 #include "io/gaze_csv.hpp"
+#include "io/png_file.hpp"
 
 namespace eyestream::samples {
 
@@ -20,8 +20,7 @@ void SceneWriter::add_frame(const cv::Mat& rgb, const cv::Mat& target_mask) {
   files_.push_back(std::move(file));
   masked_.push_back(!target_mask.empty());
   if (target_mask.empty()) return;
-  std::vector<unsigned char> png;
-  cv::imencode(".png", target_mask, png);
+  const std::vector<unsigned char> png = io::encode_png(target_mask);
   io::StagedFile mask(io::format_pattern(dir_ + "/target/%05d.png", index));
   io::write_all(mask, png);
   files_.push_back(std::move(mask));

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets with clang (AddressSanitizer and UBSan) into
 # build-fuzz/ and runs each from the seed corpora in fuzz/corpus/: the gaze,
-# config and report readers, the EXR, video, .hdr/.pfm and raw-stream
+# config and report readers, the EXR, video, .hdr/.pfm/PNG and raw-stream
 # readers, and the checkpoint reader with its validation. A crash fails the
 # script and leaves its input as build-fuzz/crash-*; turn it into a
 # regression test and a seed.

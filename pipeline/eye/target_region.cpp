@@ -1,12 +1,13 @@
 #include "pipeline/eye/target_region.hpp"
 
 #include <algorithm>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <sstream>
 
 #include "io/error.hpp"
+#include "io/float_tiff.hpp"
 #include "io/frame_sequence.hpp"
+#include "io/png_file.hpp"
 #include "io/staged_file.hpp"
 
 namespace eyestream::pipeline {
@@ -56,7 +57,7 @@ TargetRegion::TargetRegion(const std::string& rectangle, const std::string& mask
   if (!rectangle.empty() && !mask.empty()) throw UsageError("--target and --target-mask: give one of them");
   if (!rectangle.empty()) rect_ = parse_rectangle(rectangle, frame);
   if (!mask.empty())
-    for (const io::SequenceEntry& e : io::list_sequence(mask, {".png", ".pgm", ".tif", ".tiff", ".bmp"}, false,
+    for (const io::SequenceEntry& e : io::list_sequence(mask, {".png", ".tif", ".tiff"}, false,
                                                               "a target mask is needed for every frame"))
       masks_.push_back(e.path), io::protect_input(e.path);
 }
@@ -72,8 +73,22 @@ cv::Mat TargetRegion::mask(std::int64_t index) const {
     throw InputError("--target-mask: no mask for frame " + std::to_string(index) + " (the sequence has " +
                      std::to_string(masks_.size()) + ")");
   const std::string& path = masks_[masks_.size() == 1 ? 0 : index];
-  const cv::Mat grey = cv::imread(path, cv::IMREAD_GRAYSCALE);
-  if (grey.empty()) throw InputError(path + ": cannot read the target mask");
+  // A PNG's or TIFF's codes, colour made grey, as 8 bits (16-bit codes by
+  // their high byte).
+  cv::Mat grey;
+  try {
+    const std::string ext = io::lower_extension(path);
+    if (ext == ".tif" || ext == ".tiff") {
+      cv::cvtColor(io::read_code_tiff(path), grey, cv::COLOR_RGB2GRAY);
+      grey.convertTo(grey, CV_8U, 255.0);
+    } else {
+      grey = io::read_png(path);
+      if (grey.channels() == 3) cv::cvtColor(grey, grey, cv::COLOR_RGB2GRAY);
+      if (grey.depth() == CV_16U) grey.convertTo(grey, CV_8U, 1.0 / 256.0);
+    }
+  } catch (const InputError& e) {
+    throw InputError(std::string(e.what()) + " (reading the target mask)");
+  }
   if (grey.size() != frame_)
     throw InputError(path + ": target mask is " + std::to_string(grey.cols) + "x" + std::to_string(grey.rows) +
                      ", the frames " + std::to_string(frame_.width) + "x" + std::to_string(frame_.height));

@@ -6,7 +6,6 @@
 #include <fstream>
 #include <sstream>
 #include <limits>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "io/delimited_table.hpp"

@@ -261,7 +261,7 @@ ParamSet run_parameters(Settings& s) {
                  &s.veil_exclusion_deg, 0, 30));
   set.add(text("target", "X,Y,W,H: the visibility target in frame pixels; the report gives its contrast", rep,
                &s.target_rect));
-  set.add(text("target-mask", "the target as a mask image, or a numbered sequence or folder of one per frame", rep,
+  set.add(text("target-mask", "the target as a mask image (PNG or TIFF; grey above 127 is the target), or a numbered sequence or folder of one per frame", rep,
                &s.target_mask));
   // Preview.
   const std::string pre = "Preview";

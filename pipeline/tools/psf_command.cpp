@@ -3,7 +3,6 @@
 #include <cmath>
 #include <filesystem>
 #include <optional>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <sstream>
 
