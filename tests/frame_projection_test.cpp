@@ -41,6 +41,30 @@ TEST(FrameProjection, PlaneDistanceFromTheCentreIsTheTrueAngle) {
   EXPECT_NEAR(p.plane_size().width / p.pixels_per_degree(), 120.0, 1.0 / p.pixels_per_degree());
 }
 
+TEST(FrameProjection, EveryPixelsPlanePositionIsItsTrueAngle) {
+  // Every pixel of the positions map (computed for a quarter of the frame
+  // and mirrored), at even and odd sizes and two plane scales: at its true
+  // angle from the centre along its own direction (the pinhole oracle),
+  // and the float of to_plane's position bit for bit.
+  for (const cv::Size size : {cv::Size(96, 54), cv::Size(97, 55)})
+    for (const double scale : {1.0, 0.5}) {
+      const test::PinholeFrame pinhole{size.width, size.height, 120.0};
+      const FrameProjection p(size.width, size.height, 120.0, Projection::rectilinear, scale);
+      const cv::Point2d centre(0.5 * size.width, 0.5 * size.height), plane_centre = p.to_plane(centre);
+      int wrong = 0;
+      for (int y = 0; y < size.height; ++y)
+        for (int x = 0; x < size.width; ++x) {
+          const cv::Point2d q(x + 0.5, y + 0.5), direct = p.to_plane(q);
+          const cv::Vec2f got = p.plane_positions().at<cv::Vec2f>(y, x);
+          wrong += got != cv::Vec2f(float(direct.x), float(direct.y));
+          const cv::Point2d d(got[0] - plane_centre.x, got[1] - plane_centre.y), f = q - centre;
+          EXPECT_NEAR(cv::norm(d) / p.pixels_per_degree(), pinhole.angle_deg(centre, q), 1e-4) << x << "," << y;
+          EXPECT_NEAR(d.x * f.y - d.y * f.x, 0.0, 1e-3 * cv::norm(d) * cv::norm(f) + 1e-9) << x << "," << y;
+        }
+      EXPECT_EQ(wrong, 0) << size << " scale " << scale;
+    }
+}
+
 TEST(FrameProjection, LocalScaleAndSolidAngleAreThePinholesOwn) {
   const FrameProjection p(kW, kH, 120.0, Projection::rectilinear);
   for (const cv::Point2d q : {cv::Point2d(480, 270), cv::Point2d(850, 270), cv::Point2d(700, 60)}) {

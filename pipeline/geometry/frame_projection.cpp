@@ -227,27 +227,40 @@ FrameProjection::FrameProjection(int width, int height, double fov_deg, Projecti
                       int(std::ceil(2.0 * fp_ * std::atan(0.5 * height / f_px_))));
   }
   positions_.create(frame_, CV_32FC2);
-  cv::parallel_for_(cv::Range(0, height), [&](const cv::Range& r) {
-    for (int y = r.start; y < r.end; ++y) {
-      cv::Vec2f* p = positions_.ptr<cv::Vec2f>(y);
-      for (int x = 0; x < width; ++x) {
-        const cv::Point2d q = to_plane({x + 0.5, y + 0.5});
-        p[x] = cv::Vec2f(float(q.x), float(q.y));
+  // A rectilinear frame's pixels mirrored about its centre share their
+  // scale (radial_scale: X of column width - 1 - x is exactly -X of column
+  // x, and likewise for rows), so it is computed for one quarter and
+  // placed four times, each position as to_plane gives it.
+  cv::parallel_for_(cv::Range(0, (height + 1) / 2), [&](const cv::Range& r) {
+    for (int y = r.start; y < r.end; ++y)
+      for (int x = 0; x < (width + 1) / 2; ++x) {
+        const double s = kind == Projection::equidistant ? scale_
+                                                         : radial_scale((x + 0.5) - 0.5 * width, (y + 0.5) - 0.5 * height);
+        for (int py : {y, height - 1 - y})
+          for (int px : {x, width - 1 - x}) {
+            const double X = (px + 0.5) - 0.5 * width, Y = (py + 0.5) - 0.5 * height;
+            const cv::Point2d q = kind == Projection::equidistant
+                                      ? cv::Point2d(px + 0.5, py + 0.5) * scale_
+                                      : cv::Point2d(0.5 * plane_.width + X * s, 0.5 * plane_.height + Y * s);
+            positions_.at<cv::Vec2f>(py, px) = cv::Vec2f(float(q.x), float(q.y));
+          }
       }
-    }
   });
   cv::Mat shifted = positions_ - cv::Scalar(0.5, 0.5);
   cv::convertMaps(shifted, cv::Mat(), remap1_, remap2_, CV_16SC2);
   // Every pixel of these maps is independent of the others: computed by
   // rows in parallel, the same values whatever the split.
+  // The same for each quarter of the plane's mirror images.
   flux_ratio_.create(plane_, CV_32F);
-  cv::parallel_for_(cv::Range(0, plane_.height), [&](const cv::Range& r) {
+  cv::parallel_for_(cv::Range(0, (plane_.height + 1) / 2), [&](const cv::Range& r) {
     for (int v = r.start; v < r.end; ++v)
-      for (int u = 0; u < plane_.width; ++u) {
+      for (int u = 0; u < (plane_.width + 1) / 2; ++u) {
         const double theta = kind_ == Projection::equidistant
                                  ? 0.0  // angle-uniform: one solid angle per pixel, as the identity takes it
                                  : std::hypot(u + 0.5 - 0.5 * plane_.width, v + 0.5 - 0.5 * plane_.height) / fp_;
-        flux_ratio_.at<float>(v, u) = float(theta > 0.0 ? std::sin(theta) / theta : 1.0);
+        const float ratio = float(theta > 0.0 ? std::sin(theta) / theta : 1.0);
+        for (int pv : {v, plane_.height - 1 - v})
+          for (int pu : {u, plane_.width - 1 - u}) flux_ratio_.at<float>(pv, pu) = ratio;
       }
   });
   // The fixed splat and its normalisation (the sum of b over the frame
@@ -313,11 +326,15 @@ cv::Vec2d FrameProjection::offset_from(const GazeAxes& g, cv::Point2d p) const {
   return {k * a, k * b};
 }
 
+double FrameProjection::radial_scale(double X, double Y) const {
+  const double r = std::hypot(X, Y);
+  return r > 0.0 ? fp_ * std::atan(r / f_px_) / r : scale_;
+}
+
 cv::Point2d FrameProjection::to_plane(cv::Point2d p) const {
   if (identity()) return p;
   if (kind_ == Projection::equidistant) return p * scale_;
-  const double X = p.x - 0.5 * frame_.width, Y = p.y - 0.5 * frame_.height, r = std::hypot(X, Y);
-  const double s = r > 0.0 ? fp_ * std::atan(r / f_px_) / r : scale_;
+  const double X = p.x - 0.5 * frame_.width, Y = p.y - 0.5 * frame_.height, s = radial_scale(X, Y);
   return {0.5 * plane_.width + X * s, 0.5 * plane_.height + Y * s};
 }
 

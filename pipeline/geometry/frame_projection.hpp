@@ -114,6 +114,9 @@ class FrameProjection {
     cv::Vec3d ex, ey, ez;
   };
   GazeAxes gaze_axes(cv::Point2d gaze) const;
+  // Rectilinear: the plane offset over the frame offset (X, Y) from the
+  // centre, which depends on |X| and |Y| only.
+  double radial_scale(double X, double Y) const;
   cv::Vec2d offset_from(const GazeAxes& axes, cv::Point2d point) const;
 
   Projection kind_;
