@@ -33,7 +33,8 @@ cv::Size pfm_size(std::istream& in, const std::string& path) {
 cv::Size hdr_size(std::istream& in, const std::string& path) {
   std::string line;
   if (!std::getline(in, line) || line.rfind("#?", 0) != 0) malformed(path, "not a Radiance .hdr file");
-  for (int n = 0; std::getline(in, line) && !line.empty(); ++n)
+  // (A header written with CR LF ends at a line holding only CR.)
+  for (int n = 0; std::getline(in, line) && !line.empty() && line != "\r"; ++n)
     if (n > 1000) malformed(path, "not a Radiance .hdr file (no end of header)");
   if (!std::getline(in, line)) malformed(path, "not a Radiance .hdr file (no resolution line)");
   std::istringstream res(line);

@@ -5,6 +5,7 @@
 
 #include <cstdarg>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -35,7 +36,26 @@ float sample(const unsigned char* data, size_t index, int bits, bool codes) {
   return float(h);
 }
 
-cv::Mat read_tiff(const std::string& path, bool codes) {
+// Display codes of 8 bits or fewer in any photometric interpretation
+// (grey, either way round, palette, RGB, YCbCr, CMYK, one bit a pixel),
+// through libtiff's RGBA conversion, as OpenCV read them: R, G, B over 255.
+cv::Mat rgba_codes(TIFF* tif, const std::string& path, std::uint32_t width, std::uint32_t height) {
+  char message[1024] = "";
+  if (!TIFFRGBAImageOK(tif, message)) throw InputError(path + ": cannot read as a picture: " + message);
+  std::vector<std::uint32_t> raster(size_t(width) * height);
+  if (!TIFFReadRGBAImageOriented(tif, width, height, raster.data(), ORIENTATION_TOPLEFT, 1))
+    throw InputError(path + ": damaged image data");
+  cv::Mat rgb(int(height), int(width), CV_32FC3);
+  for (int y = 0; y < rgb.rows; ++y) {
+    const std::uint32_t* in = &raster[size_t(y) * width];
+    cv::Vec3f* out = rgb.ptr<cv::Vec3f>(y);
+    for (int x = 0; x < rgb.cols; ++x)
+      out[x] = cv::Vec3f(float(TIFFGetR(in[x])), float(TIFFGetG(in[x])), float(TIFFGetB(in[x]))) * (1.0f / 255.0f);
+  }
+  return rgb;
+}
+
+cv::Mat read_tiff(const std::string& path, bool codes, std::int64_t max_pixels) {
   static std::once_flag silenced;
   std::call_once(silenced, [] {
     TIFFSetErrorHandler(quiet);
@@ -56,17 +76,24 @@ cv::Mat read_tiff(const std::string& path, bool codes) {
   if (photometric == PHOTOMETRIC_LOGLUV || photometric == PHOTOMETRIC_LOGL)
     throw InputError(path + ": a LogLuv TIFF (log-encoded CIE XYZ); eyestream reads 16- or 32-bit floating-point "
                             "RGB or grey TIFFs: convert it to float RGB first");
-  if (codes && (format != SAMPLEFORMAT_UINT || (bits != 8 && bits != 16)))
+  if (width == 0 || height == 0) throw InputError(path + ": has no pixels");
+  if (std::int64_t(width) * std::int64_t(height) > max_pixels)
+    throw InputError(path + ": " + std::to_string(width) + "x" + std::to_string(height) + " exceeds the limit of " +
+                     std::to_string(max_pixels) + " pixels");
+  if (codes && format == SAMPLEFORMAT_UINT && bits <= 8) return rgba_codes(tif.get(), path, width, height);
+  if (codes && (format != SAMPLEFORMAT_UINT || bits != 16))
     throw InputError(path + ": holds " + std::to_string(bits) + "-bit " +
                      (format == SAMPLEFORMAT_IEEEFP ? "floating-point" : "signed or other") +
-                     " samples; display frames are read as 8- or 16-bit unsigned codes");
+                     " samples; display frames are read as unsigned codes of up to 16 bits");
+  if (codes && photometric != PHOTOMETRIC_MINISBLACK && photometric != PHOTOMETRIC_RGB)
+    throw InputError(path + ": 16-bit samples in photometric interpretation " + std::to_string(photometric) +
+                     "; 16-bit display frames are read as grey (black at 0) or RGB");
   if (!codes && (format != SAMPLEFORMAT_IEEEFP || (bits != 32 && bits != 16)))
     throw InputError(path + ": holds " + std::to_string(bits) + "-bit " +
                      (format == SAMPLEFORMAT_IEEEFP ? "floating-point" : "integer") +
                      " samples; eyestream reads 16- or 32-bit floating-point TIFFs (linear light)");
   if (channels < 1 || channels > 4)
     throw InputError(path + ": holds " + std::to_string(channels) + " samples a pixel (expected grey, RGB, +alpha)");
-  if (width == 0 || height == 0) throw InputError(path + ": has no pixels");
   const int colour = channels >= 3 ? 3 : 1;  // the 2nd (grey) or 4th (RGB) is alpha
   const size_t bytes = bits / 8;
   cv::Mat rgb(int(height), int(width), CV_32FC3);
@@ -118,8 +145,10 @@ cv::Mat read_tiff(const std::string& path, bool codes) {
 
 }  // namespace
 
-cv::Mat read_float_tiff(const std::string& path) { return read_tiff(path, false); }
+cv::Mat read_float_tiff(const std::string& path) {
+  return read_tiff(path, false, std::numeric_limits<std::int64_t>::max());  // the caller checked the header's size
+}
 
-cv::Mat read_code_tiff(const std::string& path) { return read_tiff(path, true); }
+cv::Mat read_code_tiff(const std::string& path, std::int64_t max_pixels) { return read_tiff(path, true, max_pixels); }
 
 }  // namespace eyestream::io

@@ -7,6 +7,7 @@
 // frames for `eyestream compare`.
 #pragma once
 
+#include <cstdint>
 #include <opencv2/core.hpp>
 #include <string>
 
@@ -17,8 +18,11 @@ namespace eyestream::io {
 // what it holds when the file is not a floating-point TIFF of that kind.
 cv::Mat read_float_tiff(const std::string& path);
 
-// A display frame's codes, 8- or 16-bit unsigned samples in the same
-// layouts, as CV_32FC3 over the codes' largest value (0 to 1).
-cv::Mat read_code_tiff(const std::string& path);
+// A display frame's codes as CV_32FC3 over the codes' largest value (0 to
+// 1): 16-bit grey or RGB samples in the layouts above, and 8 bits or fewer
+// in any photometric interpretation (palette, grey either way round, one
+// bit a pixel, YCbCr, CMYK) through libtiff's RGBA conversion, as OpenCV
+// read them. Larger than `max_pixels`: refused before decoding.
+cv::Mat read_code_tiff(const std::string& path, std::int64_t max_pixels);
 
 }  // namespace eyestream::io

@@ -22,9 +22,17 @@ namespace {
 void no_warning(png_structp, png_const_charp) {}
 [[noreturn]] void quiet_error(png_structp png, png_const_charp) { png_longjmp(png, 1); }
 
+// Appends to the vector; a failure to grow it is libpng's error, raised
+// after the C++ handler has ended (no exception crosses libpng's frames).
 void append_bytes(png_structp png, png_bytep data, png_size_t n) {
-  auto* out = static_cast<std::vector<unsigned char>*>(png_get_io_ptr(png));
-  out->insert(out->end(), data, data + n);
+  bool grown = true;
+  try {
+    auto* out = static_cast<std::vector<unsigned char>*>(png_get_io_ptr(png));
+    out->insert(out->end(), data, data + n);
+  } catch (...) {
+    grown = false;
+  }
+  if (!grown) png_error(png, "out of memory");
 }
 
 void no_flush(png_structp) {}
@@ -34,7 +42,11 @@ bool write_rows(const cv::Mat& m, double gamma, std::vector<unsigned char>* out,
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, quiet_error, no_warning);
   if (!png) return false;
   png_infop info = png_create_info_struct(png);
-  if (!info || setjmp(png_jmpbuf(png))) {
+  if (!info) {
+    png_destroy_write_struct(&png, &info);
+    return false;
+  }
+  if (setjmp(png_jmpbuf(png))) {
     png_destroy_write_struct(&png, &info);
     return false;
   }
@@ -77,8 +89,12 @@ std::string read_rows(std::FILE* file, Allocate&& allocate) {
   png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, quiet_error, no_warning);
   if (!png) return "cannot start the PNG decoder";
   png_infop info = png_create_info_struct(png);
+  if (!info) {
+    png_destroy_read_struct(&png, &info, nullptr);
+    return "cannot start the PNG decoder";
+  }
   const char* volatile failure = "not a PNG file, or a damaged one";  // volatile: read after a longjmp
-  if (!info || setjmp(png_jmpbuf(png))) {
+  if (setjmp(png_jmpbuf(png))) {
     png_destroy_read_struct(&png, &info, nullptr);
     return failure;
   }
@@ -98,7 +114,15 @@ std::string read_rows(std::FILE* file, Allocate&& allocate) {
   if (h.depth == 16) png_set_swap(png);
   png_set_interlace_handling(png);
   png_read_update_info(png, info);
-  png_bytep* rows = allocate(h, int(png_get_channels(png, info)), int(png_get_bit_depth(png, info)));
+  // The caller's allocation may throw: the decoder is destroyed first (no
+  // longjmp can cross this handler: libpng is not called inside it).
+  png_bytep* rows = nullptr;
+  try {
+    rows = allocate(h, int(png_get_channels(png, info)), int(png_get_bit_depth(png, info)));
+  } catch (...) {
+    png_destroy_read_struct(&png, &info, nullptr);
+    throw;
+  }
   if (!rows) {
     png_destroy_read_struct(&png, &info, nullptr);
     return "";  // refused by the caller, which says why

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
-#include <iterator>
 #include <sstream>
 #include <vector>
 
@@ -64,10 +63,16 @@ bool read_scanline(Bytes& in, int width, unsigned char* rgbe) {
 }  // namespace
 
 cv::Mat read_radiance_hdr(const std::string& path, std::int64_t max_pixels) {
-  std::ifstream file(path, std::ios::binary);
+  std::ifstream file(path, std::ios::binary | std::ios::ate);
   if (!file) throw InputError(path + ": cannot open");
   Bytes in;
-  in.data.assign(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
+  const std::streamoff size = file.tellg();
+  // At most 4 bytes a pixel and a run-length marker a line, plus the header:
+  // the declared size is checked below, before the pixels are made.
+  if (size < 0 || size > (std::streamoff(1) << 36)) throw InputError(path + ": cannot read its size, or larger than 64 GiB");
+  in.data.resize(size_t(size));
+  file.seekg(0);
+  if (!file.read(reinterpret_cast<char*>(in.data.data()), size)) throw InputError(path + ": cannot read");
   std::string line;
   if (!in.line(line) || line.rfind("#?", 0) != 0) throw InputError(path + ": not a Radiance .hdr file");
   while (in.line(line) && !line.empty())

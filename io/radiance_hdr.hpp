@@ -2,7 +2,10 @@
 // empty one, the resolution line "-Y height +X width" (rows top to bottom,
 // the orientation nearly every writer uses; others are refused), then the
 // scanlines, flat or in the adaptive run-length form (each of the four
-// components in runs), as OpenCV's reader took them. A pixel's value is
+// components in runs). OpenCV's reader, which this replaced, took a file
+// as flat from the first flat scanline on; this one decides for each
+// scanline by its marker, which gives the same pixels for every file a
+// writer makes. A pixel's value is
 // mantissa x 2^(exponent - 136), the format's definition; exponent 0 is
 // black.
 #pragma once

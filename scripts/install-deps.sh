@@ -7,7 +7,7 @@ packages=(
   build-essential cmake ninja-build pkg-config git time
   libopencv-core-dev libopencv-imgproc-dev
   libopencv-imgcodecs-dev  # the tests only: an independent PNG, Radiance and PFM codec to check the program's own
-  libpng-dev  # PNG pictures: OpenCV's codecs would bring about 120 libraries into every start (io/png_file.hpp)
+  libpng-dev  # PNG pictures: OpenCV's codecs would bring about 70 more libraries into every start (io/png_file.hpp)
   libopenexr-dev
   libtiff-dev  # float TIFF stills (half floats, alpha), which OpenCV's reader refuses
   libavformat-dev libavcodec-dev libavutil-dev libswscale-dev

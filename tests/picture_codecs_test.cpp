@@ -6,6 +6,7 @@
 // OpenCV's decoders on files OpenCV (or libpng's simplified writer) made.
 #include <gtest/gtest.h>
 #include <png.h>
+#include <tiffio.h>
 #include <zlib.h>
 
 #include <cstdio>
@@ -16,6 +17,7 @@
 #include <random>
 
 #include "io/error.hpp"
+#include "io/float_image_source.hpp"
 #include "io/float_tiff.hpp"
 #include "io/pfm_file.hpp"
 #include "io/png_file.hpp"
@@ -111,8 +113,9 @@ TEST(PictureCodecs, PngReadsAsOpenCvDecodes) {
       EXPECT_TRUE(same(got, opencv_rgb(path))) << "type " << type;
       EXPECT_EQ(got.channels(), type == CV_8UC1 || type == CV_16UC1 ? 1 : 3);
     }
-  // One bit a pixel (OpenCV's bilevel writer), and a palette with
-  // transparency and an interlaced grey one (libpng's simplified writer).
+  // One bit a pixel (OpenCV's bilevel writer), a palette with
+  // transparency and grey with alpha (libpng's simplified writer), and an
+  // interlaced grey one (libpng's full writer).
   const cv::Mat bits = random_codes(19, 29, CV_8UC1, 7) > 127;
   ASSERT_TRUE(cv::imwrite(dir / "bits.png", bits, {cv::IMWRITE_PNG_BILEVEL, 1}));
   EXPECT_TRUE(same(io::read_png(dir / "bits.png"), cv::imread(dir / "bits.png", cv::IMREAD_UNCHANGED)));
@@ -129,6 +132,17 @@ TEST(PictureCodecs, PngReadsAsOpenCvDecodes) {
   const cv::Mat palette = io::read_png(dir / "palette.png");
   EXPECT_EQ(palette.type(), CV_8UC3);
   EXPECT_TRUE(same(palette, opencv_rgb(dir / "palette.png")));
+  png_image ga{};
+  ga.version = PNG_IMAGE_VERSION;
+  ga.width = 29;
+  ga.height = 19;
+  ga.format = PNG_FORMAT_GA;
+  const cv::Mat grey_alpha = random_codes(19, 29, CV_8UC2, 10);
+  ASSERT_TRUE(png_image_write_to_file(&ga, (dir / "ga.png").c_str(), 0, grey_alpha.data, 0, nullptr));
+  cv::Mat grey_of_ga;
+  cv::extractChannel(grey_alpha, grey_of_ga, 0);
+  EXPECT_TRUE(same(io::read_png(dir / "ga.png"), grey_of_ga));
+  EXPECT_TRUE(same(cv::imread(dir / "ga.png", cv::IMREAD_GRAYSCALE), grey_of_ga));
   // An Adam7-interlaced file, by libpng's full writer (interlacing is not
   // offered by the simplified one).
   const cv::Mat grey = random_codes(13, 17, CV_8UC1, 9);
@@ -223,6 +237,23 @@ TEST(PictureCodecs, RadianceHdrReadsAsOpenCvDecodes) {
   refused("xyz.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_xyze\n\n-Y 1 +X 1\n\x80\x80\x80\x81", "holds 32-bit_rle_xyze pixels");
   refused("flipped.hdr", "#?RADIANCE\n\n+Y 1 +X 1\n\x80\x80\x80\x81", "the resolution line");
   refused("short.hdr", bytes.substr(0, bytes.size() - 9), "damaged or short pixel data at scanline 40");
+  const std::string head = "#?RADIANCE\n\n-Y 2 +X 8\n";
+  refused("long_run.hdr", head + std::string("\x02\x02\x00\x08\x89\x01", 6) + std::string(64, '\x01'),
+          "damaged or short pixel data at scanline 0");
+  refused("wrong_width.hdr", head + std::string("\x02\x02\x00\x09", 4) + std::string(64, '\x88'),
+          "damaged or short pixel data at scanline 0");
+  try {
+    io::read_radiance_hdr(dir / "h3.hdr", 1000);
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("333x41 exceeds the limit of 1000 pixels"), std::string::npos) << e.what();
+  }
+  // Through the program's still source (its header check first), as a
+  // file: the CR LF one reads as the other.
+  io::FloatImageSource still(dir / "crlf.hdr", {});
+  const std::optional<io::SceneFrame> frame = still.next();
+  ASSERT_TRUE(frame.has_value());
+  EXPECT_TRUE(same_floats(frame->rgb, io::read_radiance_hdr(dir / "h3.hdr") * 179.0));
 }
 
 TEST(PictureCodecs, PfmReadsAsOpenCvDecodes) {
@@ -247,21 +278,77 @@ TEST(PictureCodecs, PfmReadsAsOpenCvDecodes) {
   EXPECT_TRUE(same_floats(io::read_pfm(dir / "big.pfm"), opencv_rgb(dir / "big.pfm")));
   std::ofstream(dir / "cut.pfm", std::ios::binary) << file.substr(0, file.size() - 4);
   EXPECT_THROW(io::read_pfm(dir / "cut.pfm"), InputError);
+  EXPECT_THROW(io::read_pfm(dir / "big.pfm", 19), InputError);  // 20 pixels
+  // Big-endian grey.
+  std::string grey = "Pf\n4 5\n1.0\n";
+  for (int y = light.rows - 1; y >= 0; --y)
+    for (int x = 0; x < light.cols; ++x) {
+      std::uint32_t bits;
+      std::memcpy(&bits, &light.ptr<cv::Vec3f>(y)[x][1], 4);
+      for (int shift = 24; shift >= 0; shift -= 8) grey += char(bits >> shift);
+    }
+  std::ofstream(dir / "grey.pfm", std::ios::binary) << grey;
+  cv::Mat want = opencv_rgb(dir / "grey.pfm");
+  cv::cvtColor(want, want, cv::COLOR_GRAY2RGB);
+  EXPECT_TRUE(same_floats(io::read_pfm(dir / "grey.pfm"), want));
+}
+
+// A one-channel TIFF written by libtiff: `bits` a sample (1, 8 or 16),
+// `photometric` as given, with a palette when that is PHOTOMETRIC_PALETTE.
+void write_tiff(const std::string& path, const cv::Mat& codes, int bits, int photometric) {
+  TIFF* t = TIFFOpen(path.c_str(), "w");
+  ASSERT_NE(t, nullptr);
+  TIFFSetField(t, TIFFTAG_IMAGEWIDTH, std::uint32_t(codes.cols));
+  TIFFSetField(t, TIFFTAG_IMAGELENGTH, std::uint32_t(codes.rows));
+  TIFFSetField(t, TIFFTAG_BITSPERSAMPLE, std::uint16_t(bits));
+  TIFFSetField(t, TIFFTAG_SAMPLESPERPIXEL, std::uint16_t(1));
+  TIFFSetField(t, TIFFTAG_PHOTOMETRIC, std::uint16_t(photometric));
+  TIFFSetField(t, TIFFTAG_PLANARCONFIG, PLANARCONFIG_CONTIG);
+  TIFFSetField(t, TIFFTAG_ROWSPERSTRIP, std::uint32_t(codes.rows));
+  std::vector<std::uint16_t> red(256), green(256), blue(256);
+  for (int i = 0; i < 256; ++i) red[size_t(i)] = std::uint16_t(i * 257), green[size_t(i)] = std::uint16_t((255 - i) * 257);
+  if (photometric == PHOTOMETRIC_PALETTE) TIFFSetField(t, TIFFTAG_COLORMAP, red.data(), green.data(), blue.data());
+  for (int y = 0; y < codes.rows; ++y) {
+    std::vector<unsigned char> row(size_t(codes.cols) * 2, 0);
+    for (int x = 0; x < codes.cols; ++x) {
+      const int v = codes.depth() == CV_16U ? codes.at<std::uint16_t>(y, x) : codes.at<unsigned char>(y, x);
+      if (bits == 1 && v) row[size_t(x / 8)] |= std::uint8_t(0x80 >> (x % 8));
+      if (bits == 8) row[size_t(x)] = std::uint8_t(v);
+      if (bits == 16) std::memcpy(&row[size_t(2 * x)], &v, 2);
+    }
+    ASSERT_EQ(TIFFWriteScanline(t, row.data(), std::uint32_t(y), 0), 1);
+  }
+  TIFFClose(t);
 }
 
 TEST(PictureCodecs, CodeTiffAndMasksReadAsOpenCvDecodes) {
   test::ScratchDir dir;
-  for (int type : {CV_8UC3, CV_16UC3, CV_8UC1}) {
+  for (int type : {CV_8UC3, CV_16UC3, CV_8UC1, CV_16UC1}) {
     const std::string path = dir / ("c" + std::to_string(type) + ".tif");
     ASSERT_TRUE(cv::imwrite(path, random_codes(9, 14, type, unsigned(type))));
     cv::Mat want = opencv_rgb(path);
     if (want.channels() == 1) cv::cvtColor(want, want, cv::COLOR_GRAY2RGB);
-    want.convertTo(want, CV_32FC3, type == CV_16UC3 ? 1.0 / 65535.0 : 1.0 / 255.0);
-    EXPECT_LE(cv::norm(io::read_code_tiff(path), want, cv::NORM_INF), 1e-7) << type;
+    want.convertTo(want, CV_32FC3, CV_MAT_DEPTH(type) == CV_16U ? 1.0 / 65535.0 : 1.0 / 255.0);
+    EXPECT_LE(cv::norm(io::read_code_tiff(path, 1000), want, cv::NORM_INF), 1e-7) << type;
   }
-  // A grey PNG mask and a colour one: the target is where the grey is
-  // above 127, as OpenCV's grey reading gives it (colours kept far from
-  // the threshold, where the two grey conversions cannot disagree).
+  EXPECT_THROW(io::read_code_tiff(dir / ("c" + std::to_string(CV_8UC3) + ".tif"), 125), InputError);  // 126 pixels
+  // Palette, white-is-zero and one-bit TIFFs (libtiff's writer), as
+  // OpenCV's reader gives their colours.
+  const cv::Mat codes = random_codes(11, 21, CV_8UC1, 12);
+  write_tiff(dir / "palette.tif", codes, 8, PHOTOMETRIC_PALETTE);
+  write_tiff(dir / "white0.tif", codes, 8, PHOTOMETRIC_MINISWHITE);
+  write_tiff(dir / "bits.tif", codes > 127, 1, PHOTOMETRIC_MINISWHITE);
+  for (const char* name : {"palette.tif", "white0.tif", "bits.tif"}) {
+    cv::Mat want = opencv_rgb(dir / name);
+    if (want.channels() == 1) cv::cvtColor(want, want, cv::COLOR_GRAY2RGB);
+    want.convertTo(want, CV_32FC3, 1.0 / 255.0);
+    EXPECT_LE(cv::norm(io::read_code_tiff(dir / name, 1000), want, cv::NORM_INF), 1e-7) << name;
+  }
+  // A grey PNG mask, a colour one, a colour TIFF, a one-bit TIFF and a
+  // 16-bit PNG with codes on both sides of the threshold's high byte: the
+  // target is where the grey is above 127, as OpenCV's grey reading gives
+  // it (colours kept far from the threshold, where two grey conversions
+  // could disagree).
   cv::Mat grey = random_codes(27, 48, CV_8UC1, 5);
   grey.forEach<unsigned char>([](unsigned char& v, const int*) { v = v > 127 ? 240 : 10; });
   ASSERT_TRUE(cv::imwrite(dir / "grey.png", grey));
@@ -269,9 +356,23 @@ TEST(PictureCodecs, CodeTiffAndMasksReadAsOpenCvDecodes) {
   cv::cvtColor(grey, colour, cv::COLOR_GRAY2BGR);
   ASSERT_TRUE(cv::imwrite(dir / "colour.png", colour));
   ASSERT_TRUE(cv::imwrite(dir / "colour.tif", colour));
-  for (const char* name : {"grey.png", "colour.png", "colour.tif"}) {
+  write_tiff(dir / "mask_bits.tif", grey > 127, 1, PHOTOMETRIC_MINISWHITE);
+  cv::Mat deep = random_codes(27, 48, CV_16UC1, 6);
+  deep.forEach<std::uint16_t>([](std::uint16_t& v, const int*) { v = std::uint16_t(0x7F80 + v % 0x100); });
+  ASSERT_TRUE(cv::imwrite(dir / "deep.png", deep));
+  for (const char* name : {"grey.png", "colour.png", "colour.tif", "mask_bits.tif", "deep.png"}) {
     const pipeline::TargetRegion target("", dir / name, cv::Size(48, 27));
     EXPECT_TRUE(same(target.mask(0), cv::imread(dir / name, cv::IMREAD_GRAYSCALE) > 127)) << name;
+  }
+  EXPECT_GT(cv::countNonZero(pipeline::TargetRegion("", dir / "deep.png", cv::Size(48, 27)).mask(0)), 0);
+  // Other formats are refused by name.
+  std::ofstream(dir / "mask.pgm") << "P5\n48 27\n255\n";
+  try {
+    pipeline::TargetRegion("", dir / "mask.pgm", cv::Size(48, 27));
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("mask.pgm: target masks are read from PNG or TIFF files"), std::string::npos)
+        << e.what();
   }
 }
 

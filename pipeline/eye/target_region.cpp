@@ -1,12 +1,14 @@
 #include "pipeline/eye/target_region.hpp"
 
 #include <algorithm>
+#include <filesystem>
 #include <opencv2/imgproc.hpp>
 #include <sstream>
 
 #include "io/error.hpp"
 #include "io/float_tiff.hpp"
 #include "io/frame_sequence.hpp"
+#include "io/memory_guard.hpp"
 #include "io/png_file.hpp"
 #include "io/staged_file.hpp"
 
@@ -56,6 +58,11 @@ cv::Rect parse_rectangle(const std::string& text, cv::Size frame) {
 TargetRegion::TargetRegion(const std::string& rectangle, const std::string& mask, cv::Size frame) : frame_(frame) {
   if (!rectangle.empty() && !mask.empty()) throw UsageError("--target and --target-mask: give one of them");
   if (!rectangle.empty()) rect_ = parse_rectangle(rectangle, frame);
+  if (!mask.empty() && !std::filesystem::is_directory(mask)) {
+    const std::string ext = io::lower_extension(mask);
+    if (ext != ".png" && ext != ".tif" && ext != ".tiff")
+      throw InputError(mask + ": target masks are read from PNG or TIFF files; convert it to one of them");
+  }
   if (!mask.empty())
     for (const io::SequenceEntry& e : io::list_sequence(mask, {".png", ".tif", ".tiff"}, false,
                                                               "a target mask is needed for every frame"))
@@ -74,17 +81,23 @@ cv::Mat TargetRegion::mask(std::int64_t index) const {
                      std::to_string(masks_.size()) + ")");
   const std::string& path = masks_[masks_.size() == 1 ? 0 : index];
   // A PNG's or TIFF's codes, colour made grey, as 8 bits (16-bit codes by
-  // their high byte).
+  // their high byte, as OpenCV's grey reading gave them).
   cv::Mat grey;
   try {
+    const std::int64_t most = io::default_max_pixels();
     const std::string ext = io::lower_extension(path);
     if (ext == ".tif" || ext == ".tiff") {
-      cv::cvtColor(io::read_code_tiff(path), grey, cv::COLOR_RGB2GRAY);
+      cv::cvtColor(io::read_code_tiff(path, most), grey, cv::COLOR_RGB2GRAY);
       grey.convertTo(grey, CV_8U, 255.0);
     } else {
-      grey = io::read_png(path);
+      grey = io::read_png(path, most);
       if (grey.channels() == 3) cv::cvtColor(grey, grey, cv::COLOR_RGB2GRAY);
-      if (grey.depth() == CV_16U) grey.convertTo(grey, CV_8U, 1.0 / 256.0);
+      if (grey.depth() == CV_16U) {
+        cv::Mat high(grey.size(), CV_8U);
+        for (int y = 0; y < grey.rows; ++y)
+          for (int x = 0; x < grey.cols; ++x) high.at<unsigned char>(y, x) = grey.at<std::uint16_t>(y, x) >> 8;
+        grey = high;
+      }
     }
   } catch (const InputError& e) {
     throw InputError(std::string(e.what()) + " (reading the target mask)");
