@@ -7,7 +7,6 @@
 #include "io/error.hpp"
 #include "io/exr_file.hpp"
 #include "io/float_tiff.hpp"
-#include "io/memory_guard.hpp"
 #include "io/png_file.hpp"
 #include "io/staged_file.hpp"
 
@@ -29,8 +28,9 @@ bool is_exr(const std::string& path) { return lower_extension(path) == ".exr"; }
 // largest value, R, G, B.
 cv::Mat read_code_image(const std::string& path) {
   const std::string ext = lower_extension(path);
-  if (ext == ".tif" || ext == ".tiff") return read_code_tiff(path, default_max_pixels());
-  const cv::Mat img = read_png(path, default_max_pixels());
+  constexpr std::int64_t kMostPixels = 400'000'000;  // as for EXR frames (below)
+  if (ext == ".tif" || ext == ".tiff") return read_code_tiff(path, kMostPixels);
+  const cv::Mat img = read_png(path, kMostPixels);
   cv::Mat rgb = img;
   if (img.channels() == 1) cv::cvtColor(img, rgb, cv::COLOR_GRAY2RGB);
   cv::Mat out;

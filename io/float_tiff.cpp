@@ -38,7 +38,10 @@ float sample(const unsigned char* data, size_t index, int bits, bool codes) {
 
 // Display codes of 8 bits or fewer in any photometric interpretation
 // (grey, either way round, palette, RGB, YCbCr, CMYK, one bit a pixel),
-// through libtiff's RGBA conversion, as OpenCV read them: R, G, B over 255.
+// through libtiff's RGBA conversion, as OpenCV read them: R, G, B over 255,
+// turned upright by the Orientation tag and multiplied by an unassociated
+// alpha, as that conversion does (16-bit codes, read sample by sample
+// below, are neither: as OpenCV's reader, too).
 cv::Mat rgba_codes(TIFF* tif, const std::string& path, std::uint32_t width, std::uint32_t height) {
   char message[1024] = "";
   if (!TIFFRGBAImageOK(tif, message)) throw InputError(path + ": cannot read as a picture: " + message);

@@ -1,5 +1,6 @@
 #include "io/radiance_hdr.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -65,14 +66,20 @@ bool read_scanline(Bytes& in, int width, unsigned char* rgbe) {
 cv::Mat read_radiance_hdr(const std::string& path, std::int64_t max_pixels) {
   std::ifstream file(path, std::ios::binary | std::ios::ate);
   if (!file) throw InputError(path + ": cannot open");
-  Bytes in;
   const std::streamoff size = file.tellg();
-  // At most 4 bytes a pixel and a run-length marker a line, plus the header:
-  // the declared size is checked below, before the pixels are made.
-  if (size < 0 || size > (std::streamoff(1) << 36)) throw InputError(path + ": cannot read its size, or larger than 64 GiB");
-  in.data.resize(size_t(size));
+  if (size < 0) throw InputError(path + ": cannot read its size");
   file.seekg(0);
-  if (!file.read(reinterpret_cast<char*>(in.data.data()), size)) throw InputError(path + ": cannot read");
+  // The header from its first MiB; the pixels, once the declared size has
+  // been checked, only as far as its scanlines can reach.
+  Bytes in;
+  const auto read_to = [&](std::streamoff end) {
+    const size_t have = in.data.size(), want = size_t(std::min(end, size));
+    if (want <= have) return;
+    in.data.resize(want);
+    if (!file.read(reinterpret_cast<char*>(in.data.data() + have), std::streamsize(want - have)))
+      throw InputError(path + ": cannot read");
+  };
+  read_to(std::streamoff(1) << 20);
   std::string line;
   if (!in.line(line) || line.rfind("#?", 0) != 0) throw InputError(path + ": not a Radiance .hdr file");
   while (in.line(line) && !line.empty())
@@ -89,6 +96,9 @@ cv::Mat read_radiance_hdr(const std::string& path, std::int64_t max_pixels) {
   if (width * height > max_pixels)
     throw InputError(path + ": " + std::to_string(width) + "x" + std::to_string(height) + " exceeds the limit of " +
                      std::to_string(max_pixels) + " pixels");
+  // Each scanline at most: its marker, then every component's values with a
+  // count byte before each 128.
+  read_to(std::streamoff(in.at) + std::streamoff(height) * (4 + 4 * width + 4 * ((width + 127) / 128)));
   cv::Mat rgb(int(height), int(width), CV_32FC3);
   std::vector<unsigned char> rgbe(size_t(width) * 4);
   for (int y = 0; y < rgb.rows; ++y) {

@@ -1,14 +1,12 @@
 #include "pipeline/eye/target_region.hpp"
 
 #include <algorithm>
-#include <filesystem>
 #include <opencv2/imgproc.hpp>
 #include <sstream>
 
 #include "io/error.hpp"
 #include "io/float_tiff.hpp"
 #include "io/frame_sequence.hpp"
-#include "io/memory_guard.hpp"
 #include "io/png_file.hpp"
 #include "io/staged_file.hpp"
 
@@ -58,15 +56,14 @@ cv::Rect parse_rectangle(const std::string& text, cv::Size frame) {
 TargetRegion::TargetRegion(const std::string& rectangle, const std::string& mask, cv::Size frame) : frame_(frame) {
   if (!rectangle.empty() && !mask.empty()) throw UsageError("--target and --target-mask: give one of them");
   if (!rectangle.empty()) rect_ = parse_rectangle(rectangle, frame);
-  if (!mask.empty() && !std::filesystem::is_directory(mask)) {
-    const std::string ext = io::lower_extension(mask);
-    if (ext != ".png" && ext != ".tif" && ext != ".tiff")
-      throw InputError(mask + ": target masks are read from PNG or TIFF files; convert it to one of them");
-  }
   if (!mask.empty())
     for (const io::SequenceEntry& e : io::list_sequence(mask, {".png", ".tif", ".tiff"}, false,
-                                                              "a target mask is needed for every frame"))
+                                                              "a target mask is needed for every frame")) {
+      const std::string ext = io::lower_extension(e.path);  // a single file is listed whatever its name
+      if (ext != ".png" && ext != ".tif" && ext != ".tiff")
+        throw InputError(e.path + ": target masks are read from PNG or TIFF files; convert it to one of them");
       masks_.push_back(e.path), io::protect_input(e.path);
+    }
 }
 
 cv::Mat TargetRegion::mask(std::int64_t index) const {
@@ -84,7 +81,9 @@ cv::Mat TargetRegion::mask(std::int64_t index) const {
   // their high byte, as OpenCV's grey reading gave them).
   cv::Mat grey;
   try {
-    const std::int64_t most = io::default_max_pixels();
+    // A mask is the frames' size: up to four times it is read (and then
+    // refused by its size, below); more, refused before decoding.
+    const std::int64_t most = std::max<std::int64_t>(4 * std::int64_t(frame_.area()), 1'000'000);
     const std::string ext = io::lower_extension(path);
     if (ext == ".tif" || ext == ".tiff") {
       cv::cvtColor(io::read_code_tiff(path, most), grey, cv::COLOR_RGB2GRAY);
