@@ -1,5 +1,6 @@
 #include "io/pfm_file.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -21,11 +22,14 @@ bool word(std::istream& in, std::string& out) {
   return !out.empty() && c != EOF;
 }
 
-}  // namespace
+struct Header {
+  long long width = 0, height = 0;
+  int channels = 3;
+  double scale = 0.0;
+};
 
-cv::Mat read_pfm(const std::string& path, std::int64_t max_pixels) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open");
+// The header's four words, checked; `in` is left at the first pixel.
+Header parse_header(std::istream& in, const std::string& path) {
   std::string magic, w, h, s;
   if (!word(in, magic) || (magic != "PF" && magic != "Pf") || !word(in, w) || !word(in, h) || !word(in, s))
     throw InputError(path + ": not a PFM file");
@@ -43,12 +47,29 @@ cv::Mat read_pfm(const std::string& path, std::int64_t max_pixels) {
   if (width <= 0 || height <= 0 || width > 1000000 || height > 1000000)
     throw InputError(path + ": declares a size of " + std::to_string(width) + "x" + std::to_string(height));
   if (!std::isfinite(scale) || scale == 0.0) throw InputError(path + ": the scale " + s + " is not a non-zero number");
+  return {width, height, magic == "PF" ? 3 : 1, scale};
+}
+
+}  // namespace
+
+cv::Size pfm_size(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open");
+  const Header h = parse_header(in, path);
+  return {int(h.width), int(h.height)};
+}
+
+cv::Mat read_pfm(const std::string& path, std::int64_t max_pixels) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open");
+  const Header h = parse_header(in, path);
+  const long long width = h.width, height = h.height;
+  const int channels = h.channels;
   if (width * height > max_pixels)
     throw InputError(path + ": " + std::to_string(width) + "x" + std::to_string(height) + " exceeds the limit of " +
                      std::to_string(max_pixels) + " pixels");
-  const int channels = magic == "PF" ? 3 : 1;
-  const bool little = scale < 0.0;
-  const float times = 1.0f / float(std::fabs(scale));  // as OpenCV applied it, to the same floats
+  const bool little = h.scale < 0.0;
+  const float times = 1.0f / float(std::fabs(h.scale));  // as OpenCV applied it, to the same floats
   std::vector<unsigned char> row(size_t(width) * size_t(channels) * 4);
   cv::Mat rgb(int(height), int(width), CV_32FC3);
   for (int y = rgb.rows - 1; y >= 0; --y) {  // the file's first row is the bottom one

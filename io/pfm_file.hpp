@@ -16,4 +16,8 @@ namespace eyestream::io {
 // `max_pixels`: refused before decoding.
 cv::Mat read_pfm(const std::string& path, std::int64_t max_pixels = std::int64_t(1) << 31);
 
+// The size the file's header declares, read without its pixels (the same
+// checks of the header as read_pfm's).
+cv::Size pfm_size(const std::string& path);
+
 }  // namespace eyestream::io

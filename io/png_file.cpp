@@ -76,13 +76,9 @@ struct FileCloser {
   void operator()(std::FILE* f) const { std::fclose(f); }
 };
 
-struct Header {
-  png_uint_32 width = 0, height = 0;
-  int depth = 0, colour = 0;
-};
-
-// Reads the header, then the pixels into `pixels` (allocated by `allocate`
-// once the size is known and accepted); the message of the failure, or
+// Reads the header, then the pixels into the rows that
+// `allocate(width, height, channels, depth)` gives once the size is known
+// (null: refused, the caller says why); the message of the failure, or
 // empty.
 template <typename Allocate>
 std::string read_rows(std::FILE* file, Allocate&& allocate) {
@@ -101,24 +97,21 @@ std::string read_rows(std::FILE* file, Allocate&& allocate) {
   png_init_io(png, file);
   png_set_crc_action(png, PNG_CRC_DEFAULT, PNG_CRC_DEFAULT);
   png_read_info(png, info);
-  Header h;
-  h.width = png_get_image_width(png, info);
-  h.height = png_get_image_height(png, info);
-  h.depth = png_get_bit_depth(png, info);
-  h.colour = png_get_color_type(png, info);
+  const int depth = png_get_bit_depth(png, info), colour = png_get_color_type(png, info);
   // Palettes to RGB, grey below 8 bits to 8, alpha dropped, 16-bit
   // samples to the machine's order; interlaced images are put together.
-  if (h.colour == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
-  if (h.colour == PNG_COLOR_TYPE_GRAY && h.depth < 8) png_set_expand_gray_1_2_4_to_8(png);
-  if ((h.colour & PNG_COLOR_MASK_ALPHA) || png_get_valid(png, info, PNG_INFO_tRNS)) png_set_strip_alpha(png);
-  if (h.depth == 16) png_set_swap(png);
+  if (colour == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
+  if (colour == PNG_COLOR_TYPE_GRAY && depth < 8) png_set_expand_gray_1_2_4_to_8(png);
+  if ((colour & PNG_COLOR_MASK_ALPHA) || png_get_valid(png, info, PNG_INFO_tRNS)) png_set_strip_alpha(png);
+  if (depth == 16) png_set_swap(png);
   png_set_interlace_handling(png);
   png_read_update_info(png, info);
   // The caller's allocation may throw: the decoder is destroyed first (no
   // longjmp can cross this handler: libpng is not called inside it).
   png_bytep* rows = nullptr;
   try {
-    rows = allocate(h, int(png_get_channels(png, info)), int(png_get_bit_depth(png, info)));
+    rows = allocate(png_get_image_width(png, info), png_get_image_height(png, info), int(png_get_channels(png, info)),
+                    int(png_get_bit_depth(png, info)));
   } catch (...) {
     png_destroy_read_struct(&png, &info, nullptr);
     throw;
@@ -162,10 +155,10 @@ cv::Mat read_png(const std::string& path, std::int64_t max_pixels) {
   cv::Mat image;
   std::vector<png_bytep> rows;
   std::string refused;
-  const std::string failure = read_rows(file.get(), [&](const Header& h, int channels, int depth) -> png_bytep* {
-    if (h.width == 0 || h.height == 0 || h.width > 1000000 || h.height > 1000000 ||
-        std::int64_t(h.width) * std::int64_t(h.height) > max_pixels) {
-      refused = "a " + std::to_string(h.width) + "x" + std::to_string(h.height) + " PNG exceeds the limit of " +
+  const auto allocate = [&](png_uint_32 width, png_uint_32 height, int channels, int depth) -> png_bytep* {
+    if (width == 0 || height == 0 || width > 1000000 || height > 1000000 ||
+        std::int64_t(width) * std::int64_t(height) > max_pixels) {
+      refused = "a " + std::to_string(width) + "x" + std::to_string(height) + " PNG exceeds the limit of " +
                 std::to_string(max_pixels) + " pixels";
       return nullptr;
     }
@@ -173,11 +166,12 @@ cv::Mat read_png(const std::string& path, std::int64_t max_pixels) {
       refused = "a PNG of " + std::to_string(channels) + " samples a pixel";
       return nullptr;
     }
-    image.create(int(h.height), int(h.width), CV_MAKETYPE(depth == 16 ? CV_16U : CV_8U, channels));
-    rows.resize(size_t(h.height));
+    image.create(int(height), int(width), CV_MAKETYPE(depth == 16 ? CV_16U : CV_8U, channels));
+    rows.resize(size_t(height));
     for (int y = 0; y < image.rows; ++y) rows[size_t(y)] = image.ptr<png_byte>(y);
     return rows.data();
-  });
+  };
+  const std::string failure = read_rows(file.get(), allocate);
   if (!refused.empty()) throw InputError(path + ": " + refused);
   if (!failure.empty()) throw InputError(path + ": " + failure);
   return image;

@@ -61,25 +61,31 @@ bool read_scanline(Bytes& in, int width, unsigned char* rgbe) {
   return true;
 }
 
-}  // namespace
-
-cv::Mat read_radiance_hdr(const std::string& path, std::int64_t max_pixels) {
-  std::ifstream file(path, std::ios::binary | std::ios::ate);
-  if (!file) throw InputError(path + ": cannot open");
-  const std::streamoff size = file.tellg();
-  if (size < 0) throw InputError(path + ": cannot read its size");
-  file.seekg(0);
-  // The header from its first MiB; the pixels, once the declared size has
-  // been checked, only as far as its scanlines can reach.
+// The file, read on demand: the header from its first MiB, the pixels
+// only once the declared size has been checked.
+struct RadianceFile {
+  std::ifstream file;
+  std::streamoff size = 0;
   Bytes in;
-  const auto read_to = [&](std::streamoff end) {
+  explicit RadianceFile(const std::string& path) : file(path, std::ios::binary | std::ios::ate) {
+    if (!file) throw InputError(path + ": cannot open");
+    size = file.tellg();
+    if (size < 0) throw InputError(path + ": cannot read its size");
+    file.seekg(0);
+    read_to(std::streamoff(1) << 20, path);
+  }
+  void read_to(std::streamoff end, const std::string& path) {
     const size_t have = in.data.size(), want = size_t(std::min(end, size));
     if (want <= have) return;
     in.data.resize(want);
     if (!file.read(reinterpret_cast<char*>(in.data.data() + have), std::streamsize(want - have)))
       throw InputError(path + ": cannot read");
-  };
-  read_to(std::streamoff(1) << 20);
+  }
+};
+
+// The header's lines up to the empty one and the resolution line; the
+// declared width and height, leaving `in` at the first scanline.
+cv::Size parse_header(Bytes& in, const std::string& path) {
   std::string line;
   if (!in.line(line) || line.rfind("#?", 0) != 0) throw InputError(path + ": not a Radiance .hdr file");
   while (in.line(line) && !line.empty())
@@ -93,12 +99,27 @@ cv::Mat read_radiance_hdr(const std::string& path, std::int64_t max_pixels) {
                             "left): '" + line.substr(0, 40) + "'");
   if (width <= 0 || height <= 0 || width > 1000000 || height > 1000000)
     throw InputError(path + ": declares a size of " + std::to_string(width) + "x" + std::to_string(height));
+  return {int(width), int(height)};
+}
+
+}  // namespace
+
+cv::Size radiance_hdr_size(const std::string& path) {
+  RadianceFile f(path);
+  return parse_header(f.in, path);
+}
+
+cv::Mat read_radiance_hdr(const std::string& path, std::int64_t max_pixels) {
+  RadianceFile f(path);
+  Bytes& in = f.in;
+  const cv::Size declared = parse_header(in, path);
+  const long long width = declared.width, height = declared.height;
   if (width * height > max_pixels)
     throw InputError(path + ": " + std::to_string(width) + "x" + std::to_string(height) + " exceeds the limit of " +
                      std::to_string(max_pixels) + " pixels");
   // Each scanline at most: its marker, then every component's values with a
   // count byte before each 128.
-  read_to(std::streamoff(in.at) + std::streamoff(height) * (4 + 4 * width + 4 * ((width + 127) / 128)));
+  f.read_to(std::streamoff(in.at) + std::streamoff(height) * (4 + 4 * width + 4 * ((width + 127) / 128)), path);
   cv::Mat rgb(int(height), int(width), CV_32FC3);
   std::vector<unsigned char> rgbe(size_t(width) * 4);
   for (int y = 0; y < rgb.rows; ++y) {

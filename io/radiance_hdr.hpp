@@ -22,4 +22,8 @@ namespace eyestream::io {
 // refused before decoding.
 cv::Mat read_radiance_hdr(const std::string& path, std::int64_t max_pixels = std::int64_t(1) << 31);
 
+// The size the file's header declares, read without its pixels (the same
+// checks of the header as read_radiance_hdr's).
+cv::Size radiance_hdr_size(const std::string& path);
+
 }  // namespace eyestream::io

@@ -224,6 +224,15 @@ TEST(PictureCodecs, RadianceHdrReadsAsOpenCvDecodes) {
   for (size_t i = 0; i < end + 2; ++i) crlf += bytes[i] == '\n' ? std::string("\r\n") : std::string(1, bytes[i]);
   std::ofstream(dir / "crlf.hdr", std::ios::binary) << crlf << bytes.substr(end + 2);
   EXPECT_TRUE(same_floats(io::read_radiance_hdr(dir / "crlf.hdr"), io::read_radiance_hdr(dir / "h3.hdr")));
+  // A header as Radiance's own tools and other renderers write it: the
+  // program's name, comments, the exposure, gamma, primaries and software
+  // lines before the format; read as OpenCV reads it.
+  std::ofstream(dir / "renderer.hdr", std::ios::binary)
+      << "#?RADIANCE\n# rendered by a test\nSOFTWARE=test 1.0\nEXPOSURE=1.0\nGAMMA=1.0\n"
+         "PRIMARIES=0.640 0.330 0.300 0.600 0.150 0.060 0.3127 0.3290\nFORMAT=32-bit_rle_rgbe\n\n"
+      << bytes.substr(end + 2);
+  EXPECT_TRUE(same_floats(io::read_radiance_hdr(dir / "renderer.hdr"), opencv_rgb(dir / "renderer.hdr")));
+  EXPECT_TRUE(same_floats(io::read_radiance_hdr(dir / "renderer.hdr"), io::read_radiance_hdr(dir / "h3.hdr")));
   // Refusals name the file and what is wrong.
   const auto refused = [&](const std::string& name, const std::string& content, const std::string& what) {
     std::ofstream(dir / name, std::ios::binary) << content;
