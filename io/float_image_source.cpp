@@ -61,12 +61,10 @@ std::optional<SceneFrame> FloatImageSource::next() {
   // TIFF through libtiff (float_tiff.hpp), Radiance .hdr and PFM by their
   // own readers: each gives R, G, B.
   const std::string ext = lower_extension(entry.path);
-  const cv::Mat image = ext == ".tif" || ext == ".tiff" ? read_float_tiff(entry.path)
+  const cv::Mat image = ext == ".tif" || ext == ".tiff" ? read_float_tiff(entry.path, options_.max_pixels)
                         : ext == ".pfm"                 ? read_pfm(entry.path, options_.max_pixels)
                                                         : read_radiance_hdr(entry.path, options_.max_pixels);
   if (index == 0 && info_.width == 0) info_.width = image.cols, info_.height = image.rows;
-  if (image.cols * std::int64_t(image.rows) > options_.max_pixels)
-    throw InputError(entry.path + ": exceeds --max-pixels");
   if (image.cols != info_.width || image.rows != info_.height)
     throw InputError(entry.path + ": frame " + std::to_string(index) + " is " + std::to_string(image.cols) + "x" +
                      std::to_string(image.rows) + ", the sequence began at " + std::to_string(info_.width) + "x" +

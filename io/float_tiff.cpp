@@ -5,7 +5,6 @@
 
 #include <cstdarg>
 #include <cstdio>
-#include <limits>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -148,9 +147,7 @@ cv::Mat read_tiff(const std::string& path, bool codes, std::int64_t max_pixels) 
 
 }  // namespace
 
-cv::Mat read_float_tiff(const std::string& path) {
-  return read_tiff(path, false, std::numeric_limits<std::int64_t>::max());  // the caller checked the header's size
-}
+cv::Mat read_float_tiff(const std::string& path, std::int64_t max_pixels) { return read_tiff(path, false, max_pixels); }
 
 cv::Mat read_code_tiff(const std::string& path, std::int64_t max_pixels) { return read_tiff(path, true, max_pixels); }
 

@@ -16,7 +16,8 @@ namespace eyestream::io {
 // The first image of the file as linear RGB, CV_32FC3 (R, G, B; grey is
 // copied to the three; alpha is dropped). InputError naming the file and
 // what it holds when the file is not a floating-point TIFF of that kind.
-cv::Mat read_float_tiff(const std::string& path);
+// Larger than `max_pixels`: refused before decoding.
+cv::Mat read_float_tiff(const std::string& path, std::int64_t max_pixels = std::int64_t(1) << 31);
 
 // A display frame's codes as CV_32FC3 over the codes' largest value (0 to
 // 1): 16-bit grey or RGB samples in the layouts above, and 8 bits or fewer

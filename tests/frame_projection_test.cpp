@@ -63,6 +63,16 @@ TEST(FrameProjection, EveryPixelsPlanePositionIsItsTrueAngle) {
         }
       EXPECT_EQ(wrong, 0) << size << " scale " << scale;
     }
+  // An equidistant frame's positions (its own branch of the same loop),
+  // at an odd size and a plane at half its px/deg: to_plane's bit for bit.
+  const FrameProjection e(97, 55, 120.0, Projection::equidistant, 0.5);
+  int wrong = 0;
+  for (int y = 0; y < 55; ++y)
+    for (int x = 0; x < 97; ++x) {
+      const cv::Point2d direct = e.to_plane({x + 0.5, y + 0.5});
+      wrong += e.plane_positions().at<cv::Vec2f>(y, x) != cv::Vec2f(float(direct.x), float(direct.y));
+    }
+  EXPECT_EQ(wrong, 0);
 }
 
 TEST(FrameProjection, LocalScaleAndSolidAngleAreThePinholesOwn) {
