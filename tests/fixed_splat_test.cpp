@@ -9,6 +9,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <tuple>
 #include <opencv2/core/utility.hpp>
 
 #include "tests/bilinear_share_oracle.hpp"
@@ -126,6 +128,36 @@ TEST(FixedSplat, TheSameBytesWhateverTheThreadCount) {
   splat.apply(frame, factor, many);
   cv::setNumThreads(threads);
   EXPECT_EQ(cv::norm(one, many, cv::NORM_INF), 0.0);
+}
+
+// The weights' sums (the angle plane's normalisation): channel 0 of a
+// frame of ones by a factor of 1, bit for bit, and the shares summed here
+// in double.
+TEST(FixedSplat, WeightSumsAreASplatOfOnesBitForBit) {
+  for (const auto& [frame_size, plane, seed] :
+       {std::tuple{cv::Size(97, 61), cv::Size(80, 45), 11u}, std::tuple{cv::Size(130, 140), cv::Size(121, 96), 12u}}) {
+    const cv::Mat positions = wandering_positions(frame_size, plane, seed);
+    const FixedSplat splat(positions, plane);
+    cv::Mat sums, ones_splat;
+    splat.weight_sums(sums);
+    ASSERT_EQ(sums.size(), plane);
+    ASSERT_EQ(sums.type(), CV_32F);
+    splat.apply(cv::Mat(frame_size, CV_32FC3, cv::Scalar::all(1.0)), cv::Mat(plane, CV_32F, cv::Scalar(1.0)),
+                ones_splat);
+    cv::Mat reach;
+    const cv::Mat want = naive_splat(cv::Mat(frame_size, CV_32FC3, cv::Scalar::all(1.0)), positions, plane,
+                                     cv::Mat(plane, CV_32F, cv::Scalar(1.0)), reach);
+    int positive = 0;
+    for (int v = 0; v < plane.height; ++v)
+      for (int u = 0; u < plane.width; ++u) {
+        const float got = sums.at<float>(v, u), ones = ones_splat.at<cv::Vec3f>(v, u)[0];
+        ASSERT_EQ(std::memcmp(&got, &ones, sizeof(float)), 0) << "pixel " << u << "," << v;
+        const double w = want.at<cv::Vec3d>(v, u)[0];
+        ASSERT_NEAR(got, w, 1e-5 * w + 2e-6 * reach.at<cv::Vec3d>(v, u)[0]) << "pixel " << u << "," << v;
+        positive += got > 0.0f;
+      }
+    EXPECT_GT(positive, plane.area() / 10);  // (these positions cover 16-24 % of their planes)
+  }
 }
 
 TEST(FixedSplat, RefusesPositionsBeyondItsBorders) {

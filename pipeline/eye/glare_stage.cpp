@@ -83,7 +83,7 @@ GlareStage::GlareStage(const Plan& plan)
     const double centre = g.at<double>(g.rows / 2) * g.at<double>(g.rows / 2);
     for (cv::Vec3d& c : centre_) c = cv::Vec3d::all(centre);
     if (plan.glare.full)
-      in_frame_.push_back(in_frame_share(cv::Mat(plan.height, plan.width, CV_32FC3, cv::Scalar::all(1.0)), {}));  // weights unused
+      in_frame_.push_back(in_frame_share(glare_frame_ones(), {}));  // weights unused
     return;
   }
   if (plan.glare.wave_lines) wave_ = std::make_unique<glare::WaveLines>(optics_, plan.pixels_per_degree);
@@ -124,7 +124,7 @@ GlareStage::GlareStage(const Plan& plan)
   // The core, inner and outer components are the same in every channel
   // (only the halo's rings are coloured), so one pass spreads all three,
   // one per channel, each channel computed as it would be alone.
-  const cv::Mat ones(plan.height, plan.width, CV_32FC3, cv::Scalar::all(1.0));
+  const cv::Mat ones = glare_frame_ones();
   glare::ChannelWeights grey;
   grey[0].core = grey[1].inner = grey[2].outer = 1.0;
   std::vector<cv::Mat> shares;
@@ -133,6 +133,15 @@ GlareStage::GlareStage(const Plan& plan)
   glare::PsfWeights halo;
   halo.halo = 1.0;
   in_frame_.push_back(one_channel_if_grey(in_frame_share(ones, glare::same_in_every_channel(halo))));
+}
+
+cv::Mat GlareStage::glare_frame_ones() const {
+  // A frame of even size halves to ones exactly ((0 + (1 + 1 + 1 + 1)) x
+  // 0.25, halve_frame.hpp): made at the halved size, it skips a
+  // frame-sized image (25 MB at 1080p, each page's first touch a cost) and
+  // its halving. Odd sizes weigh their last row and column otherwise.
+  const bool halves_exactly = !halved_.empty() && plan_.width % 2 == 0 && plan_.height % 2 == 0;
+  return cv::Mat(halves_exactly ? halved_ : cv::Size(plan_.width, plan_.height), CV_32FC3, cv::Scalar::all(1.0));
 }
 
 cv::Mat GlareStage::one_channel_if_grey(const cv::Mat& map) {

@@ -73,6 +73,9 @@ class GlareStage {
   // or moved_light of a frame of ones (each channel with its own weights:
   // a component per channel).
   cv::Mat in_frame_share(const cv::Mat& ones, const glare::ChannelWeights& w) const;
+  // A frame of ones for in_frame_share(): the frame's size, or the glare
+  // frame's where halving the frame's would give it exactly.
+  cv::Mat glare_frame_ones() const;
   // The convolution on the angle plane.
   cv::Mat spread_plane(const cv::Mat& plane, const glare::ChannelWeights& w) const;
   // Per channel, the share of a pixel's light the PSF of weights `w` keeps

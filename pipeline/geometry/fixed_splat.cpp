@@ -99,6 +99,16 @@ void FixedSplat::apply(const cv::Mat& frame, const cv::Mat& factor, cv::Mat& out
   CV_Assert(frame.type() == CV_32FC3 && frame.size() == positions_.size() && factor.type() == CV_32F &&
             factor.size() == plane_);
   out.create(plane_, CV_32FC3);
+  splat<false>(&frame, &factor, out);
+}
+
+void FixedSplat::weight_sums(cv::Mat& out) const {
+  out.create(plane_, CV_32F);
+  splat<true>(nullptr, nullptr, out);
+}
+
+template <bool kOnes>
+void FixedSplat::splat(const cv::Mat* frame, const cv::Mat* factor, cv::Mat& out) const {
   const int cols = plane_.width, stride = cols + 2;
   const int blocks = int(first_run_.size()) - 1;
   // One accumulator per share of the blocks, made by the calling thread,
@@ -116,7 +126,7 @@ void FixedSplat::apply(const cv::Mat& frame, const cv::Mat& factor, cv::Mat& out
         std::fill(sums, sums + size_t(rows + 2) * size_t(stride), Rgbx{0, 0, 0, 0});  // rows r0 - 1 .. r0 + rows
         for (size_t i = first_run_[size_t(b)]; i < first_run_[size_t(b) + 1]; ++i) {
           const Run& run = runs_[i];
-          const cv::Vec3f* in = frame.ptr<cv::Vec3f>(run.y);
+          const cv::Vec3f* in = kOnes ? nullptr : frame->ptr<cv::Vec3f>(run.y);
           const cv::Vec2f* pos = positions_.ptr<cv::Vec2f>(run.y);
           // The right column's sum stays in a register for the next pixel,
           // which usually lands one column on: each sum still takes its
@@ -133,7 +143,7 @@ void FixedSplat::apply(const cv::Mat& frame, const cv::Mat& factor, cv::Mat& out
             }
             const float fx = tx - float(i0 + 1), fy = ty - float(j0 + 1);
             Rgbx* s = &sums[size_t(j0 - r0 + 1) * size_t(stride) + size_t(i0 + 1)];
-            const Rgbx value = {in[x][0], in[x][1], in[x][2], 0.0f};
+            const Rgbx value = kOnes ? Rgbx{1.0f, 1.0f, 1.0f, 0.0f} : Rgbx{in[x][0], in[x][1], in[x][2], 0.0f};
             const Rgbx top_row = value * (1.0f - fy), bottom_row = value * fy;
             top.add(s, top_row * (1.0f - fx), top_row * fx);
             bottom.add(s + stride, bottom_row * (1.0f - fx), bottom_row * fx);
@@ -142,9 +152,14 @@ void FixedSplat::apply(const cv::Mat& frame, const cv::Mat& factor, cv::Mat& out
           bottom.flush();
         }
         for (int j = 0; j < rows; ++j) {
-          cv::Vec3f* o = out.ptr<cv::Vec3f>(r0 + j);
-          const float* f = factor.ptr<float>(r0 + j);
           const Rgbx* s = &sums[size_t(j + 1) * size_t(stride) + 1];
+          if (kOnes) {  // (a factor of 1 would change nothing)
+            float* o = out.ptr<float>(r0 + j);
+            for (int i = 0; i < cols; ++i) o[i] = s[i][0];
+            continue;
+          }
+          cv::Vec3f* o = out.ptr<cv::Vec3f>(r0 + j);
+          const float* f = factor->ptr<float>(r0 + j);
           for (int i = 0; i < cols; ++i) {
             const Rgbx v = s[i] * f[i];
             o[i] = cv::Vec3f(v[0], v[1], v[2]);

@@ -30,8 +30,16 @@ class FixedSplat {
   // out (CV_32FC3, plane-sized) = the splat of `frame` (CV_32FC3) times
   // `factor` (CV_32F, plane-sized).
   void apply(const cv::Mat& frame, const cv::Mat& factor, cv::Mat& out) const;
+  // out (CV_32F, plane-sized) = the sum of the weights landing on each
+  // plane pixel: channel 0 of apply() of a frame of ones by a factor of 1,
+  // bit for bit, without either image.
+  void weight_sums(cv::Mat& out) const;
 
  private:
+  // apply() (kOnes false), or weight_sums() (a frame of ones, no factor,
+  // one channel out).
+  template <bool kOnes>
+  void splat(const cv::Mat* frame, const cv::Mat* factor, cv::Mat& out) const;
   struct Run {
     int y, x0, x1;  // frame row y, columns [x0, x1)
   };

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <mutex>
 #include <opencv2/imgproc.hpp>
 
 #include "io/error.hpp"
@@ -210,6 +211,15 @@ Projection projection_from_name(const std::string& name) {
 
 const char* projection_name(Projection p) { return p == Projection::rectilinear ? "rectilinear" : "equidistant"; }
 
+struct FrameProjection::Carriage {
+  std::once_flag made;
+  cv::Mat positions;         // CV_32FC2, frame-sized
+  cv::Mat remap1, remap2;    // positions as cv::remap's fixed-point maps
+  cv::Mat flux_ratio;        // CV_32F, plane-sized: sin(theta) / theta
+  cv::Mat flux_norm;         // CV_32F, plane-sized: flux_ratio over the sum of splat weights; 0 beyond the frame
+  std::shared_ptr<const FixedSplat> flux_splat;  // the frame's pixels onto the plane, by fixed runs
+};
+
 FrameProjection::FrameProjection(int width, int height, double fov_deg, Projection kind, double scale)
     : kind_(kind), frame_(width, height), plane_(width, height), fov_deg_(fov_deg), scale_(scale),
       frame_ppd_(width / fov_deg), ppd_(width / fov_deg) {
@@ -226,7 +236,21 @@ FrameProjection::FrameProjection(int width, int height, double fov_deg, Projecti
     plane_ = cv::Size(int(std::ceil(2.0 * fp_ * std::atan(0.5 * width / f_px_))),
                       int(std::ceil(2.0 * fp_ * std::atan(0.5 * height / f_px_))));
   }
-  positions_.create(frame_, CV_32FC2);
+  carriage_ = std::make_shared<Carriage>();
+}
+
+const FrameProjection::Carriage& FrameProjection::carriage() const {
+  CV_Assert(carriage_);  // (the identity has none: nothing is carried)
+  std::call_once(carriage_->made, [&] { make_carriage(*carriage_); });
+  return *carriage_;
+}
+
+const cv::Mat& FrameProjection::plane_positions() const { return carriage().positions; }
+
+void FrameProjection::make_carriage(Carriage& m) const {
+  const int width = frame_.width, height = frame_.height;
+  const Projection kind = kind_;
+  m.positions.create(frame_, CV_32FC2);
   // A rectilinear frame's pixels mirrored about its centre share their
   // scale (radial_scale: X of column width - 1 - x is exactly -X of column
   // x, and likewise for rows), so it is computed for one quarter and
@@ -242,16 +266,16 @@ FrameProjection::FrameProjection(int width, int height, double fov_deg, Projecti
             const cv::Point2d q = kind == Projection::equidistant
                                       ? cv::Point2d(px + 0.5, py + 0.5) * scale_
                                       : cv::Point2d(0.5 * plane_.width + X * s, 0.5 * plane_.height + Y * s);
-            positions_.at<cv::Vec2f>(py, px) = cv::Vec2f(float(q.x), float(q.y));
+            m.positions.at<cv::Vec2f>(py, px) = cv::Vec2f(float(q.x), float(q.y));
           }
       }
   });
-  cv::Mat shifted = positions_ - cv::Scalar(0.5, 0.5);
-  cv::convertMaps(shifted, cv::Mat(), remap1_, remap2_, CV_16SC2);
+  cv::Mat shifted = m.positions - cv::Scalar(0.5, 0.5);
+  cv::convertMaps(shifted, cv::Mat(), m.remap1, m.remap2, CV_16SC2);
   // Every pixel of these maps is independent of the others: computed by
   // rows in parallel, the same values whatever the split.
   // The same for each quarter of the plane's mirror images.
-  flux_ratio_.create(plane_, CV_32F);
+  m.flux_ratio.create(plane_, CV_32F);
   cv::parallel_for_(cv::Range(0, (plane_.height + 1) / 2), [&](const cv::Range& r) {
     for (int v = r.start; v < r.end; ++v)
       for (int u = 0; u < (plane_.width + 1) / 2; ++u) {
@@ -260,23 +284,23 @@ FrameProjection::FrameProjection(int width, int height, double fov_deg, Projecti
                                  : std::hypot(u + 0.5 - 0.5 * plane_.width, v + 0.5 - 0.5 * plane_.height) / fp_;
         const float ratio = float(theta > 0.0 ? std::sin(theta) / theta : 1.0);
         for (int pv : {v, plane_.height - 1 - v})
-          for (int pu : {u, plane_.width - 1 - u}) flux_ratio_.at<float>(pv, pu) = ratio;
+          for (int pu : {u, plane_.width - 1 - u}) m.flux_ratio.at<float>(pv, pu) = ratio;
       }
   });
   // The fixed splat and its normalisation (the sum of b over the frame
   // pixels landing on each plane pixel: the same every frame).
-  flux_splat_ = std::make_shared<const FixedSplat>(positions_, plane_);
-  const cv::Mat weight = splat_any(cv::Mat(frame_, CV_32FC1, cv::Scalar(1.0)), positions_, Affine{1, 1, -0.5}, plane_,
+  m.flux_splat = std::make_shared<const FixedSplat>(m.positions, plane_);
+  const cv::Mat weight = splat_any(cv::Mat(frame_, CV_32FC1, cv::Scalar(1.0)), m.positions, Affine{1, 1, -0.5}, plane_,
                                    cv::Scalar(0.0), cv::Mat());  // 1 where covered, 0 beyond
-  cv::Mat ones(frame_, CV_32FC3, cv::Scalar::all(1.0)), sums(plane_, CV_32FC3);
-  flux_splat_->apply(ones, cv::Mat(plane_, CV_32F, cv::Scalar(1.0)), sums);
-  flux_norm_.create(plane_, CV_32F);
+  cv::Mat sums;
+  m.flux_splat->weight_sums(sums);
+  m.flux_norm.create(plane_, CV_32F);
   cv::parallel_for_(cv::Range(0, plane_.height), [&](const cv::Range& r) {
     for (int v = r.start; v < r.end; ++v)
       for (int u = 0; u < plane_.width; ++u) {
-        const float b = sums.at<cv::Vec3f>(v, u)[0];
-        flux_norm_.at<float>(v, u) =
-            weight.at<float>(v, u) > 0.0f && b > 0.0f ? flux_ratio_.at<float>(v, u) / b : 0.0f;
+        const float b = sums.at<float>(v, u);
+        m.flux_norm.at<float>(v, u) =
+            weight.at<float>(v, u) > 0.0f && b > 0.0f ? m.flux_ratio.at<float>(v, u) / b : 0.0f;
       }
   });
 }
@@ -392,16 +416,17 @@ cv::Mat FrameProjection::to_plane_mean(const cv::Mat& frame, const cv::Scalar& o
   if (identity() && size == frame_) return frame;
   CV_Assert(!identity());
   const Affine a{double(size.width) / plane_.width, double(size.height) / plane_.height, -0.5};
-  return splat_any(frame, positions_, a, size, outside, cv::Mat());
+  return splat_any(frame, carriage().positions, a, size, outside, cv::Mat());
 }
 
 cv::Mat FrameProjection::to_plane_flux(const cv::Mat& frame) const {
   CV_Assert(frame.size() == frame_);
   if (identity()) return frame;
+  const Carriage& m = carriage();
   if (frame.type() != CV_32FC3)
-    return splat_any(frame, positions_, Affine{1, 1, -0.5}, plane_, cv::Scalar::all(0.0), flux_ratio_);
+    return splat_any(frame, m.positions, Affine{1, 1, -0.5}, plane_, cv::Scalar::all(0.0), m.flux_ratio);
   cv::Mat out;
-  flux_splat_->apply(frame, flux_norm_, out);
+  m.flux_splat->apply(frame, m.flux_norm, out);
   return out;
 }
 
@@ -470,6 +495,7 @@ cv::Mat FrameProjection::to_frame_image(const cv::Mat& plane) const {
 
 void FrameProjection::to_frame_image(const cv::Mat& plane, cv::Mat& out, const RowFinish& finish) const {
   CV_Assert(!identity() && plane.size() == plane_ && plane.type() == CV_32FC3);
+  const Carriage& m = carriage();
   out.create(frame_, CV_32FC3);
   // Each stripe of rows through cv::remap (every pixel computed on its
   // own from the plane, so any split gives the same values; the stripes
@@ -481,7 +507,7 @@ void FrameProjection::to_frame_image(const cv::Mat& plane, cv::Mat& out, const R
     for (int s = r.start; s < r.end; ++s) {
       const cv::Range rows(s * kStripeRows, std::min(frame_.height, (s + 1) * kStripeRows));
       cv::Mat stripe = out.rowRange(rows);
-      cv::remap(plane, stripe, remap1_.rowRange(rows), remap2_.rowRange(rows), cv::INTER_LINEAR,
+      cv::remap(plane, stripe, m.remap1.rowRange(rows), m.remap2.rowRange(rows), cv::INTER_LINEAR,
                 cv::BORDER_REPLICATE);
       if (finish)
         for (int y = rows.start; y < rows.end; ++y) finish(y, out.ptr<float>(y));

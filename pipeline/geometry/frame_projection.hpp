@@ -105,7 +105,7 @@ class FrameProjection {
   using RowFinish = std::function<void(int y, float* row)>;
   void to_frame_image(const cv::Mat& plane, cv::Mat& out, const RowFinish& finish) const;
   // The plane position of every frame pixel's centre (CV_32FC2).
-  const cv::Mat& plane_positions() const { return positions_; }
+  const cv::Mat& plane_positions() const;
 
  private:
   // Rectilinear: the gaze's direction ez and the axes ex (the frame's
@@ -124,11 +124,17 @@ class FrameProjection {
   double fov_deg_, scale_;
   double f_px_ = 0.0, fp_ = 0.0;  // rectilinear: the frame's focal length, the plane's (f_px_ scale), in px
   double frame_ppd_, ppd_;        // the frame's px/deg at its centre, and the plane's
-  cv::Mat positions_;           // CV_32FC2, frame-sized
-  cv::Mat remap1_, remap2_;     // positions as cv::remap's fixed-point maps
-  cv::Mat flux_ratio_;          // CV_32F, plane-sized: sin(theta) / theta
-  cv::Mat flux_norm_;           // CV_32F, plane-sized: flux_ratio_ over the sum of splat weights; 0 beyond the frame
-  std::shared_ptr<const FixedSplat> flux_splat_;  // the frame's pixels onto the plane, by fixed runs
+  // What carries images between the frame and the plane (the calls
+  // above that take or give an image): made on the first such call, once,
+  // whichever thread makes it. The points' and the gaze's conversions do
+  // not need it, so a projection used only for them (the retina's, when
+  // the glare has a plane of its own) never makes it: at 1080p it is 5
+  // frame-sized maps and a splat's runs, about a third of a `fast` run's
+  // set-up, mostly the pages' first touch.
+  struct Carriage;
+  const Carriage& carriage() const;
+  void make_carriage(Carriage& c) const;
+  std::shared_ptr<Carriage> carriage_;  // copies of the projection share it
 };
 
 }  // namespace eyestream::pipeline
