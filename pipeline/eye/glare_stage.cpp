@@ -71,6 +71,9 @@ GlareStage::GlareStage(const Plan& plan)
       plane_(glare_plane(plan)),
       ppd_(plane_->pixels_per_degree()) {
   const cv::Size plane = plane_->plane_size();
+  // The plane's maps at set-up (in every glare mode): the run empties the
+  // buffer pool after it, and the first frame does not wait for them.
+  if (!plane_->identity()) plane_->make_carriage_now();
   if (!halved_.empty()) {  // the halved glare frame's taps to the frame (spread())
     up_cols_ = std::make_shared<const retina::BilinearAxis>(plan.width, halved_.width,
                                                             float(halved_.width) / float(plan.width));

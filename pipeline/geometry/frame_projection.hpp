@@ -104,8 +104,13 @@ class FrameProjection {
   // any thread.
   using RowFinish = std::function<void(int y, float* row)>;
   void to_frame_image(const cv::Mat& plane, cv::Mat& out, const RowFinish& finish) const;
-  // The plane position of every frame pixel's centre (CV_32FC2).
+  // The plane position of every frame pixel's centre (CV_32FC2; not for
+  // the identity, which has none).
   const cv::Mat& plane_positions() const;
+  // Makes the maps that carry images between the frame and the plane now
+  // rather than at their first use (not for the identity): the glare
+  // stage's set-up, so that its first frame does not wait for them.
+  void make_carriage_now() const { carriage(); }
 
  private:
   // Rectilinear: the gaze's direction ez and the axes ex (the frame's
@@ -124,13 +129,15 @@ class FrameProjection {
   double fov_deg_, scale_;
   double f_px_ = 0.0, fp_ = 0.0;  // rectilinear: the frame's focal length, the plane's (f_px_ scale), in px
   double frame_ppd_, ppd_;        // the frame's px/deg at its centre, and the plane's
-  // What carries images between the frame and the plane (the calls
-  // above that take or give an image): made on the first such call, once,
-  // whichever thread makes it. The points' and the gaze's conversions do
-  // not need it, so a projection used only for them (the retina's, when
-  // the glare has a plane of its own) never makes it: at 1080p it is 5
-  // frame-sized maps and a splat's runs, about a third of a `fast` run's
-  // set-up, mostly the pages' first touch.
+  // What carries images between the frame and the plane (the positions,
+  // cv::remap's maps, the flux weights and the fixed splat; for
+  // to_plane_mean, to_plane_flux, to_frame_image and plane_positions):
+  // made on the first such call or by make_carriage_now(), once. The
+  // points' and the gaze's conversions do not need it, so a projection
+  // used only for them (the retina's, when the glare has a plane of its
+  // own) never makes it: at 1080p three frame-sized maps and two
+  // plane-sized ones, with their temporaries, which a one-frame `fast` run
+  // no longer touches (docs/performance.md).
   struct Carriage;
   const Carriage& carriage() const;
   void make_carriage(Carriage& c) const;
