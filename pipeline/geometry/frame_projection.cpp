@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "io/error.hpp"
+#include "pipeline/geometry/remap_maps.hpp"
 #include "retina/pixel_vector.hpp"
 
 namespace eyestream::pipeline {
@@ -270,8 +271,7 @@ void FrameProjection::make_carriage(Carriage& m) const {
           }
       }
   });
-  cv::Mat shifted = m.positions - cv::Scalar(0.5, 0.5);
-  cv::convertMaps(shifted, cv::Mat(), m.remap1, m.remap2, CV_16SC2);
+  remap_maps(m.positions, m.remap1, m.remap2);
   // Every pixel of these maps is independent of the others: computed by
   // rows in parallel, the same values whatever the split.
   // The same for each quarter of the plane's mirror images.
@@ -292,13 +292,13 @@ void FrameProjection::make_carriage(Carriage& m) const {
   m.flux_splat = std::make_shared<const FixedSplat>(m.positions, plane_);
   const cv::Mat weight = splat_any(cv::Mat(frame_, CV_32FC1, cv::Scalar(1.0)), m.positions, Affine{1, 1, -0.5}, plane_,
                                    cv::Scalar(0.0), cv::Mat());  // 1 where covered, 0 beyond
-  cv::Mat sums;
-  m.flux_splat->weight_sums(sums);
-  m.flux_norm.create(plane_, CV_32F);
+  // The sums made in place of the normalisation, each read before it is
+  // replaced (no plane-sized image beside it).
+  m.flux_splat->weight_sums(m.flux_norm);
   cv::parallel_for_(cv::Range(0, plane_.height), [&](const cv::Range& r) {
     for (int v = r.start; v < r.end; ++v)
       for (int u = 0; u < plane_.width; ++u) {
-        const float b = sums.at<float>(v, u);
+        const float b = m.flux_norm.at<float>(v, u);
         m.flux_norm.at<float>(v, u) =
             weight.at<float>(v, u) > 0.0f && b > 0.0f ? m.flux_ratio.at<float>(v, u) / b : 0.0f;
       }
