@@ -10,6 +10,8 @@
 
 #include <atomic>
 #include <cmath>
+#include <cstring>
+#include <tuple>
 #include <opencv2/core/utility.hpp>
 #include <vector>
 
@@ -240,6 +242,24 @@ TEST(FrameProjection, TheFluxSplatIsEachPixelsBilinearShare) {
 // The way back: a plane holding a linear ramp comes back as the ramp at
 // each frame pixel's pinhole position (to cv::remap's 1/32 px steps), and
 // each row is handed to the finishing step once, as it was sampled.
+// The flux of a frame of ones made from the splat's weights (the glare
+// stage's in-frame shares): to_plane_flux's own bytes, with the weights
+// summed or the factor applied differently a last bit would move.
+TEST(FrameProjection, TheFluxOfOnesIsToPlaneFluxsBitForBit) {
+  for (const auto& [w, h, kind, scale] : {std::tuple{97, 55, Projection::rectilinear, 1.0},
+                                          std::tuple{160, 90, Projection::rectilinear, 0.5},
+                                          std::tuple{97, 55, Projection::equidistant, 0.5}}) {
+    const FrameProjection p(w, h, 120.0, kind, scale);
+    const cv::Mat want = p.to_plane_flux(cv::Mat(h, w, CV_32FC3, cv::Scalar::all(1.0)));
+    const cv::Mat got = p.flux_of_ones();
+    ASSERT_EQ(got.size(), want.size());
+    ASSERT_EQ(got.type(), want.type());
+    for (int y = 0; y < got.rows; ++y)
+      ASSERT_EQ(std::memcmp(got.ptr(y), want.ptr(y), size_t(got.cols) * got.elemSize()), 0) << w << "x" << h << " row " << y;
+    EXPECT_GT(cv::norm(got, cv::NORM_INF), 0.5);
+  }
+}
+
 TEST(FrameProjection, TheWayBackSamplesThePlaneAndFinishesEachRowOnce) {
   const FrameProjection p(kW, kH, 120.0, Projection::rectilinear);
   const cv::Size plane = p.plane_size();

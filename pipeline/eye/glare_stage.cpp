@@ -139,12 +139,16 @@ GlareStage::GlareStage(const Plan& plan)
 }
 
 cv::Mat GlareStage::glare_frame_ones() const {
-  // A frame of even size halves to ones exactly ((0 + (1 + 1 + 1 + 1)) x
-  // 0.25, halve_frame.hpp): made at the halved size, it skips a
-  // frame-sized image (25 MB at 1080p, each page's first touch a cost) and
-  // its halving. Odd sizes weigh their last row and column otherwise.
-  const bool halves_exactly = !halved_.empty() && plan_.width % 2 == 0 && plan_.height % 2 == 0;
-  return cv::Mat(halves_exactly ? halved_ : cv::Size(plan_.width, plan_.height), CV_32FC3, cv::Scalar::all(1.0));
+  // The glare frame's ones are ones exactly when it is the frame or an
+  // even-sized frame halved ((0 + (1 + 1 + 1 + 1)) x 0.25,
+  // halve_frame.hpp): then the plane's flux of them comes from the plane's
+  // own weights (FrameProjection::flux_of_ones), the same bytes without a
+  // frame-sized image (25 MB at 1080p, each page's first touch a cost) or
+  // its pass. Odd sizes halve with other weights at their last row and
+  // column: the frame of ones goes the frames' way.
+  const bool exact = halved_.empty() || (plan_.width % 2 == 0 && plan_.height % 2 == 0);
+  if (exact && !plane_->identity()) return cv::Mat();
+  return cv::Mat(plan_.height, plan_.width, CV_32FC3, cv::Scalar::all(1.0));
 }
 
 cv::Mat GlareStage::one_channel_if_grey(const cv::Mat& map) {
@@ -187,13 +191,18 @@ cv::Vec3f GlareStage::kept_share(const glare::PsfWeights& w) const {
 }
 
 cv::Mat GlareStage::in_frame_share(const cv::Mat& ones, const glare::ChannelWeights& w) const {
-  return plane_->identity() ? spread_plane(ones, w) : moved_light(ones, w);
+  if (plane_->identity()) return spread_plane(ones, w);
+  return ones.empty() ? moved_light_of_flux(plane_->flux_of_ones(), w) : moved_light(ones, w);
 }
 
 cv::Mat GlareStage::moved_light(const cv::Mat& rgb, const glare::ChannelWeights& w,
                                 const FrameProjection::RowFinish& finish) const {
+  return moved_light_of_flux(plane_->to_plane_flux(to_glare_frame(rgb)), w, finish);
+}
+
+cv::Mat GlareStage::moved_light_of_flux(cv::Mat flux, const glare::ChannelWeights& w,
+                                        const FrameProjection::RowFinish& finish) const {
   const FrameProjection& p = *plane_;
-  cv::Mat flux = p.to_plane_flux(to_glare_frame(rgb));
   cv::Mat scattered = spread_plane(flux, w);
   if (plan_.glare.gaussian) {  // a blur keeps its centre: take it out (the same share whatever the weights)
     const cv::Vec3f kept = kept_share(w[0]);

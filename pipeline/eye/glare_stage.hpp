@@ -69,12 +69,15 @@ class GlareStage {
   // `finish` as FrameProjection::to_frame_image's.
   cv::Mat moved_light(const cv::Mat& rgb, const glare::ChannelWeights& w,
                       const FrameProjection::RowFinish& finish = {}) const;
+  // The same from the glare frame's flux on the plane (to_plane_flux's).
+  cv::Mat moved_light_of_flux(cv::Mat flux, const glare::ChannelWeights& w,
+                              const FrameProjection::RowFinish& finish = {}) const;
   // What in_frame_ holds for a component: spread (the frame's own plane)
   // or moved_light of a frame of ones (each channel with its own weights:
-  // a component per channel).
+  // a component per channel); `ones` as glare_frame_ones() gives it.
   cv::Mat in_frame_share(const cv::Mat& ones, const glare::ChannelWeights& w) const;
-  // A frame of ones for in_frame_share(): the frame's size, or the glare
-  // frame's where halving the frame's would give it exactly.
+  // The frame of ones for in_frame_share(), or nothing where the plane's
+  // flux of the glare frame's ones can be had without it (the same bytes).
   cv::Mat glare_frame_ones() const;
   // The convolution on the angle plane.
   cv::Mat spread_plane(const cv::Mat& plane, const glare::ChannelWeights& w) const;

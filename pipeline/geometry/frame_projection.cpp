@@ -430,6 +430,26 @@ cv::Mat FrameProjection::to_plane_flux(const cv::Mat& frame) const {
   return out;
 }
 
+cv::Mat FrameProjection::flux_of_ones() const {
+  CV_Assert(!identity());
+  // A frame of ones splatted is each plane pixel's weight sum in every
+  // channel (FixedSplat::weight_sums, bit for bit); times the factor as
+  // FixedSplat::apply multiplies it.
+  const Carriage& m = carriage();
+  cv::Mat sums;
+  m.flux_splat->weight_sums(sums);
+  cv::Mat out(plane_, CV_32FC3);
+  cv::parallel_for_(cv::Range(0, plane_.height), [&](const cv::Range& r) {
+    for (int v = r.start; v < r.end; ++v) {
+      const float* s = sums.ptr<float>(v);
+      const float* f = m.flux_norm.ptr<float>(v);
+      cv::Vec3f* o = out.ptr<cv::Vec3f>(v);
+      for (int u = 0; u < plane_.width; ++u) o[u] = cv::Vec3f::all(s[u] * f[u]);
+    }
+  });
+  return out;
+}
+
 cv::Mat FrameProjection::gaze_positions(cv::Point2d gaze, cv::Size size, double scale, cv::Point2d origin) const {
   const double sx = double(frame_.width) / size.width, sy = double(frame_.height) / size.height;
   cv::Mat out(size, CV_32FC2);

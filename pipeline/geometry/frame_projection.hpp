@@ -95,6 +95,9 @@ class FrameProjection {
   // that a shift-invariant convolution on the plane spreads each frame
   // pixel's flux: mean times sin(theta) / theta, 0 beyond the frame.
   cv::Mat to_plane_flux(const cv::Mat& frame) const;
+  // to_plane_flux of a frame of ones (CV_32FC3), bit for bit, made from
+  // the splat's weights alone (not for the identity).
+  cv::Mat flux_of_ones() const;
   // A plane image (plane-sized, CV_32FC3) sampled bilinearly at every
   // frame pixel's direction (the plane itself for the identity).
   cv::Mat to_frame_image(const cv::Mat& plane) const;
@@ -131,7 +134,8 @@ class FrameProjection {
   double frame_ppd_, ppd_;        // the frame's px/deg at its centre, and the plane's
   // What carries images between the frame and the plane (the positions,
   // cv::remap's maps, the flux weights and the fixed splat; for
-  // to_plane_mean, to_plane_flux, to_frame_image and plane_positions):
+  // to_plane_mean, to_plane_flux, flux_of_ones, to_frame_image and
+  // plane_positions):
   // made on the first such call or by make_carriage_now(), once. The
   // points' and the gaze's conversions do not need it, so a projection
   // used only for them (the retina's, when the glare has a plane of its
