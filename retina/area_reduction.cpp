@@ -6,7 +6,6 @@
 #include <cstring>
 #include <opencv2/imgproc.hpp>
 
-#include "retina/halve_frame.hpp"
 #include "retina/pixel_vector.hpp"
 #include "retina/vector_clones.hpp"
 
@@ -84,7 +83,6 @@ AreaReduction::AreaReduction(cv::Size from, cv::Size to) : from_(from), to_(to) 
   const double sx = input_per_output(from.width, to.width), sy = input_per_output(from.height, to.height);
   // (A pixel's taps: its input pixels, at most the reduction rounded up, + 1.)
   ours_ = sx >= 1.0 && sy >= 1.0 && !(whole(sx) && whole(sy)) && from != to && sx < kMostTaps - 1;
-  halves_ = from.width % 2 == 0 && from.height % 2 == 0 && to == from / 2;
   if (!ours_) return;
   const Axis x(from.width, to.width);
   first_ = x.first;
@@ -101,10 +99,6 @@ AreaReduction::AreaReduction(cv::Size from, cv::Size to) : from_(from), to_(to) 
 
 void AreaReduction::apply(const cv::Mat& in, cv::Mat& out) const {
   CV_Assert(in.size() == from_ && out.data != in.data);
-  if (halves_ && in.type() == CV_32FC3) {
-    halve_frame(in, out);
-    return;
-  }
   if (!ours_ || in.type() != CV_32FC3) {
     cv::resize(in, out, to_, 0, 0, cv::INTER_AREA);
     return;

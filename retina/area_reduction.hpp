@@ -9,10 +9,7 @@
 // on one thread, about half OpenCV's time; vector gathers over the output
 // values were slower than OpenCV on this project's AMD EPYC machine). For
 // the retina stage's reduction of the frame to `balanced`'s grid (0.31
-// site a pixel at 1080p). A halving of an even-sized frame (`fast`'s
-// grid, 0.25 site a pixel) goes to halve_frame (halve_frame.hpp: the same
-// bytes as OpenCV's whole-factor path, which loops a value at a time over
-// three channels). Other types, other whole factors each way (where
+// site a pixel at 1080p). Other types, whole factors each way (where
 // OpenCV takes its other path), enlargements and reductions of 7 or more
 // across (past the taps a pixel holds here) go to cv::resize itself. One
 // difference: OpenCV starts the first row of each of its row stripes at
@@ -39,7 +36,7 @@ class AreaReduction {
   void apply(const cv::Mat& in, cv::Mat& out) const;
   // Whether apply() makes three-channel floats itself (else cv::resize
   // does).
-  bool replaces_opencv() const { return ours_ || halves_; }
+  bool replaces_opencv() const { return ours_; }
 
  private:
   // One axis's taps: output index d takes input indices
@@ -50,8 +47,7 @@ class AreaReduction {
     Axis(int from, int to);
   };
   cv::Size from_, to_;
-  bool ours_ = false;    // else cv::resize
-  bool halves_ = false;  // an even-sized frame halved: halve_frame
+  bool ours_ = false;  // else cv::resize
   // The row sums' taps: output pixel d sums n input pixels from first_[d]
   // with weights weight_[d * kMostTaps + t]. by_taps_[n] lists the pixels
   // with n taps, but those whose last tap is the row's last input pixel,

@@ -5,8 +5,7 @@
 // output column, a region of a larger image and an exactly sized one,
 // values from 1e-9 to 1e9 cd/m^2 in one image with zeros, an infinity and
 // a NaN; and the cases it hands to cv::resize (whole factors, enlargement,
-// one channel, reductions past its taps), and halvings of even-sized
-// frames (made by halve_frame).
+// one channel, reductions past its taps).
 #include "retina/area_reduction.hpp"
 
 #include <gtest/gtest.h>
@@ -67,9 +66,6 @@ TEST(AreaReduction, IsCvResizesAreaMeanBitForBit) {
 TEST(AreaReduction, LeavesWholeFactorsEnlargementsAndOtherTypesToOpenCv) {
   cv::RNG random(6);
   expect_as_opencv(scene({96, 60}, CV_32FC3, random), {24, 15}, false);  // 4 each way: OpenCV's other path
-  expect_as_opencv(scene({1920, 1080}, CV_32FC3, random), {960, 540}, true);  // halved (`fast`'s grid): halve_frame
-  expect_as_opencv(scene({96, 60}, CV_32FC3, random), {48, 30}, true);
-  expect_as_opencv(scene({97, 61}, CV_32FC3, random), {49, 31}, true);  // odd: not a whole factor (its own loop)
   expect_as_opencv(scene({5, 9}, CV_32FC3, random), {1, 1}, false);      // 5 and 9: the same
   expect_as_opencv(scene({96, 60}, CV_32FC3, random), {100, 30}, false);  // wider
   expect_as_opencv(scene({97, 61}, CV_32FC3, random), {13, 7}, false);   // 7.5 across: past the taps

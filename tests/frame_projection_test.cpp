@@ -239,9 +239,6 @@ TEST(FrameProjection, TheFluxSplatIsEachPixelsBilinearShare) {
   EXPECT_GT(checked, plane.area() / 2);
 }
 
-// The way back: a plane holding a linear ramp comes back as the ramp at
-// each frame pixel's pinhole position (to cv::remap's 1/32 px steps), and
-// each row is handed to the finishing step once, as it was sampled.
 // The flux of a frame of ones made from the splat's weights (the glare
 // stage's in-frame shares): to_plane_flux's own bytes, with the weights
 // summed or the factor applied differently a last bit would move.
@@ -260,6 +257,9 @@ TEST(FrameProjection, TheFluxOfOnesIsToPlaneFluxsBitForBit) {
   }
 }
 
+// The way back: a plane holding a linear ramp comes back as the ramp at
+// each frame pixel's pinhole position (to cv::remap's 1/32 px steps), and
+// each row is handed to the finishing step once, as it was sampled.
 TEST(FrameProjection, TheWayBackSamplesThePlaneAndFinishesEachRowOnce) {
   const FrameProjection p(kW, kH, 120.0, Projection::rectilinear);
   const cv::Size plane = p.plane_size();

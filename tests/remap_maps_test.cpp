@@ -1,9 +1,10 @@
 // remap_maps (pipeline/geometry/remap_maps.hpp) against OpenCV's own
 // cv::convertMaps of the shifted positions, bit for bit: positions over a
 // plane and beyond its edges (negative ones, whose whole part floors),
-// exact ties of the fixed-point rounding (even and odd), the shift's own
-// rounding (positions near 2^20), and a frame-sized case; and through
-// cv::remap, the samples the maps give.
+// exact ties of the fixed-point rounding (even and odd, either sign),
+// positions whose shift by 0.5 itself rounds (small ones, either sign),
+// whole parts past a short's range (saturated, either sign), and a
+// frame-sized case; and through cv::remap, the samples the maps give.
 #include "pipeline/geometry/remap_maps.hpp"
 
 #include <gtest/gtest.h>
@@ -33,14 +34,16 @@ TEST(RemapMaps, AreConvertMapsOfTheShiftedPositionsBitForBit) {
   cv::Mat spread(61, 97, CV_32FC2);
   random.fill(spread, cv::RNG::UNIFORM, -3.0, 120.0);
   expect_as_convert_maps(spread);
-  // Ties: (p - 0.5) x 32 = k + 0.5 for k even and odd, either sign; and
-  // positions where p - 0.5 itself rounds.
+  // Row 0: ties, (p - 0.5) x 32 = k + 0.5 for k even and odd, either
+  // sign; rows 1 and 3: more ties at other scales; row 2: p - 0.5 rounded
+  // (p small, either sign) and whole parts beyond a short's range.
   cv::Mat ties(4, 64, CV_32FC2);
   for (int x = 0; x < 64; ++x) {
     const float k = float(x - 32) + 0.5f;
     ties.at<cv::Vec2f>(0, x) = cv::Vec2f(0.5f + k / 32.0f, 0.5f - k / 32.0f);
     ties.at<cv::Vec2f>(1, x) = cv::Vec2f(0.5f + float(x) / 64.0f, 0.5f + float(x) / 32.0f);
-    ties.at<cv::Vec2f>(2, x) = cv::Vec2f(1048576.0f + float(x) * 0.0625f, 3.0f + float(x) / 96.0f);
+    ties.at<cv::Vec2f>(2, x) = x < 60 ? cv::Vec2f(-0.49f + float(x) * 0.0071f, 1e-3f * float(x) + 1e-5f)
+                                      : cv::Vec2f(x % 2 ? -2e6f : 2e6f, x % 2 ? 1048576.3f : -1048576.3f);
     ties.at<cv::Vec2f>(3, x) = cv::Vec2f(-0.5f + float(x) / 1024.0f, 700.25f + float(x) / 128.0f);
   }
   expect_as_convert_maps(ties);

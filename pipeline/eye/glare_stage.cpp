@@ -86,7 +86,7 @@ GlareStage::GlareStage(const Plan& plan)
     const double centre = g.at<double>(g.rows / 2) * g.at<double>(g.rows / 2);
     for (cv::Vec3d& c : centre_) c = cv::Vec3d::all(centre);
     if (plan.glare.full)
-      in_frame_.push_back(in_frame_share(glare_frame_ones(), {}));  // weights unused
+      in_frame_.push_back(in_frame_share(glare_frame_ones(), cv::Mat(), {}));  // weights unused
     return;
   }
   if (plan.glare.wave_lines) wave_ = std::make_unique<glare::WaveLines>(optics_, plan.pixels_per_degree);
@@ -128,14 +128,15 @@ GlareStage::GlareStage(const Plan& plan)
   // (only the halo's rings are coloured), so one pass spreads all three,
   // one per channel, each channel computed as it would be alone.
   const cv::Mat ones = glare_frame_ones();
+  const cv::Mat ones_flux = ones.empty() ? plane_->flux_of_ones() : cv::Mat();  // made once for both passes
   glare::ChannelWeights grey;
   grey[0].core = grey[1].inner = grey[2].outer = 1.0;
   std::vector<cv::Mat> shares;
-  cv::split(in_frame_share(ones, grey), shares);
+  cv::split(in_frame_share(ones, ones_flux, grey), shares);
   for (const cv::Mat& share : shares) in_frame_.push_back(share);
   glare::PsfWeights halo;
   halo.halo = 1.0;
-  in_frame_.push_back(one_channel_if_grey(in_frame_share(ones, glare::same_in_every_channel(halo))));
+  in_frame_.push_back(one_channel_if_grey(in_frame_share(ones, ones_flux, glare::same_in_every_channel(halo))));
 }
 
 cv::Mat GlareStage::glare_frame_ones() const {
@@ -190,9 +191,10 @@ cv::Vec3f GlareStage::kept_share(const glare::PsfWeights& w) const {
   return plan_.glare.gaussian ? cv::Vec3f::all(float(centre_[0][0])) : cv::Vec3f(float(k[0]), float(k[1]), float(k[2]));
 }
 
-cv::Mat GlareStage::in_frame_share(const cv::Mat& ones, const glare::ChannelWeights& w) const {
+cv::Mat GlareStage::in_frame_share(const cv::Mat& ones, const cv::Mat& ones_flux, const glare::ChannelWeights& w) const {
   if (plane_->identity()) return spread_plane(ones, w);
-  return ones.empty() ? moved_light_of_flux(plane_->flux_of_ones(), w) : moved_light(ones, w);
+  if (!ones.empty()) return moved_light(ones, w);
+  return moved_light_of_flux(ones_flux.empty() ? plane_->flux_of_ones() : ones_flux, w);
 }
 
 cv::Mat GlareStage::moved_light(const cv::Mat& rgb, const glare::ChannelWeights& w,

@@ -74,8 +74,10 @@ class GlareStage {
                               const FrameProjection::RowFinish& finish = {}) const;
   // What in_frame_ holds for a component: spread (the frame's own plane)
   // or moved_light of a frame of ones (each channel with its own weights:
-  // a component per channel); `ones` as glare_frame_ones() gives it.
-  cv::Mat in_frame_share(const cv::Mat& ones, const glare::ChannelWeights& w) const;
+  // a component per channel); `ones` as glare_frame_ones() gives it, and
+  // where that is nothing, `ones_flux` the plane's flux_of_ones() (made
+  // here when not given). Neither is changed.
+  cv::Mat in_frame_share(const cv::Mat& ones, const cv::Mat& ones_flux, const glare::ChannelWeights& w) const;
   // The frame of ones for in_frame_share(), or nothing where the plane's
   // flux of the glare frame's ones can be had without it (the same bytes).
   cv::Mat glare_frame_ones() const;
