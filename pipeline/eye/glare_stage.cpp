@@ -86,7 +86,7 @@ GlareStage::GlareStage(const Plan& plan)
     const double centre = g.at<double>(g.rows / 2) * g.at<double>(g.rows / 2);
     for (cv::Vec3d& c : centre_) c = cv::Vec3d::all(centre);
     if (plan.glare.full)
-      in_frame_.push_back(in_frame_share(glare_frame_ones(), cv::Mat(), {}));  // weights unused
+      in_frame_.push_back(in_frame_share(in_frame_source(), {}));  // weights unused
     return;
   }
   if (plan.glare.wave_lines) wave_ = std::make_unique<glare::WaveLines>(optics_, plan.pixels_per_degree);
@@ -127,29 +127,28 @@ GlareStage::GlareStage(const Plan& plan)
   // The core, inner and outer components are the same in every channel
   // (only the halo's rings are coloured), so one pass spreads all three,
   // one per channel, each channel computed as it would be alone.
-  const cv::Mat ones = glare_frame_ones();
-  const cv::Mat ones_flux = ones.empty() ? plane_->flux_of_ones() : cv::Mat();  // made once for both passes
+  const cv::Mat source = in_frame_source();  // made once for both passes
   glare::ChannelWeights grey;
   grey[0].core = grey[1].inner = grey[2].outer = 1.0;
   std::vector<cv::Mat> shares;
-  cv::split(in_frame_share(ones, ones_flux, grey), shares);
+  cv::split(in_frame_share(source, grey), shares);
   for (const cv::Mat& share : shares) in_frame_.push_back(share);
   glare::PsfWeights halo;
   halo.halo = 1.0;
-  in_frame_.push_back(one_channel_if_grey(in_frame_share(ones, ones_flux, glare::same_in_every_channel(halo))));
+  in_frame_.push_back(one_channel_if_grey(in_frame_share(source, glare::same_in_every_channel(halo))));
 }
 
-cv::Mat GlareStage::glare_frame_ones() const {
+cv::Mat GlareStage::in_frame_source() const {
+  const auto frame_ones = [&] { return cv::Mat(plan_.height, plan_.width, CV_32FC3, cv::Scalar::all(1.0)); };
+  if (plane_->identity()) return frame_ones();
   // The glare frame's ones are ones exactly when it is the frame or an
   // even-sized frame halved ((0 + (1 + 1 + 1 + 1)) x 0.25,
-  // halve_frame.hpp): then the plane's flux of them comes from the plane's
-  // own weights (FrameProjection::flux_of_ones), the same bytes without a
-  // frame-sized image (25 MB at 1080p, each page's first touch a cost) or
-  // its pass. Odd sizes halve with other weights at their last row and
-  // column: the frame of ones goes the frames' way.
+  // halve_frame.hpp): then their flux comes from the plane's own weights
+  // (FrameProjection::flux_of_ones), the same bytes without a frame-sized
+  // image (25 MB at 1080p, each page's first touch a cost) or its pass.
+  // Odd sizes halve with other weights at their last row and column.
   const bool exact = halved_.empty() || (plan_.width % 2 == 0 && plan_.height % 2 == 0);
-  if (exact && !plane_->identity()) return cv::Mat();
-  return cv::Mat(plan_.height, plan_.width, CV_32FC3, cv::Scalar::all(1.0));
+  return exact ? plane_->flux_of_ones() : plane_->to_plane_flux(to_glare_frame(frame_ones()));
 }
 
 cv::Mat GlareStage::one_channel_if_grey(const cv::Mat& map) {
@@ -191,10 +190,8 @@ cv::Vec3f GlareStage::kept_share(const glare::PsfWeights& w) const {
   return plan_.glare.gaussian ? cv::Vec3f::all(float(centre_[0][0])) : cv::Vec3f(float(k[0]), float(k[1]), float(k[2]));
 }
 
-cv::Mat GlareStage::in_frame_share(const cv::Mat& ones, const cv::Mat& ones_flux, const glare::ChannelWeights& w) const {
-  if (plane_->identity()) return spread_plane(ones, w);
-  if (!ones.empty()) return moved_light(ones, w);
-  return moved_light_of_flux(ones_flux.empty() ? plane_->flux_of_ones() : ones_flux, w);
+cv::Mat GlareStage::in_frame_share(const cv::Mat& source, const glare::ChannelWeights& w) const {
+  return plane_->identity() ? spread_plane(source, w) : moved_light_of_flux(source, w);
 }
 
 cv::Mat GlareStage::moved_light(const cv::Mat& rgb, const glare::ChannelWeights& w,

@@ -73,14 +73,12 @@ class GlareStage {
   cv::Mat moved_light_of_flux(cv::Mat flux, const glare::ChannelWeights& w,
                               const FrameProjection::RowFinish& finish = {}) const;
   // What in_frame_ holds for a component: spread (the frame's own plane)
-  // or moved_light of a frame of ones (each channel with its own weights:
-  // a component per channel); `ones` as glare_frame_ones() gives it, and
-  // where that is nothing, `ones_flux` the plane's flux_of_ones() (made
-  // here when not given). Neither is changed.
-  cv::Mat in_frame_share(const cv::Mat& ones, const cv::Mat& ones_flux, const glare::ChannelWeights& w) const;
-  // The frame of ones for in_frame_share(), or nothing where the plane's
-  // flux of the glare frame's ones can be had without it (the same bytes).
-  cv::Mat glare_frame_ones() const;
+  // or moved light of a frame of ones (each channel with its own weights:
+  // a component per channel), from in_frame_source() (not changed).
+  cv::Mat in_frame_share(const cv::Mat& source, const glare::ChannelWeights& w) const;
+  // What in_frame_share() spreads: a frame of ones on the frame's own
+  // plane, else the plane's flux of the glare frame's ones.
+  cv::Mat in_frame_source() const;
   // The convolution on the angle plane.
   cv::Mat spread_plane(const cv::Mat& plane, const glare::ChannelWeights& w) const;
   // Per channel, the share of a pixel's light the PSF of weights `w` keeps
