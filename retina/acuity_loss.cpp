@@ -59,34 +59,31 @@ std::uint8_t first_kept_row(const float* level, const std::vector<float>& tau, s
   return deepest;
 }
 
-// The pixels of a row that take level k (k_row[x] == k) get its values
-// `from`; the others keep theirs. Every value is written, chosen bit for
-// bit by a mask, so that the loop is vectorised (as a branch per pixel,
-// or as a select of floats, it is not).
-typedef std::uint32_t FloatBits __attribute__((may_alias));
+static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "run_end reads the first differing byte as the lowest");
 
-EYESTREAM_VECTOR_CLONES
-void take_level(const std::uint8_t* __restrict k_row, std::uint8_t k, const float* __restrict from_values,
-                float* __restrict out_values, int pixels) {
-  const FloatBits* __restrict from = reinterpret_cast<const FloatBits*>(from_values);
-  FloatBits* __restrict out = reinterpret_cast<FloatBits*>(out_values);
-  for (int x = 0; x < pixels; ++x) {
-    const std::uint32_t take = k_row[x] == k ? 0xffffffffu : 0u;
-    out[3 * x] = (from[3 * x] & take) | (out[3 * x] & ~take);
-    out[3 * x + 1] = (from[3 * x + 1] & take) | (out[3 * x + 1] & ~take);
-    out[3 * x + 2] = (from[3 * x + 2] & take) | (out[3 * x + 2] & ~take);
+// The end of the run of equal levels that starts at x: the first e > x
+// with k_row[e] != k_row[x] (cols when none), eight bytes at a time.
+int run_end(const std::uint8_t* k_row, int x, int cols) {
+  const std::uint64_t k = std::uint64_t(k_row[x]) * 0x0101010101010101ull;
+  int e = x + 1;
+  for (; e + 8 <= cols; e += 8) {
+    std::uint64_t bytes;
+    std::memcpy(&bytes, k_row + e, 8);
+    if (const std::uint64_t differ = bytes ^ k) return e + __builtin_ctzll(differ) / 8;  // little-endian
   }
+  while (e < cols && k_row[e] == k_row[x]) ++e;
+  return e;
 }
 
-// The pixels [x0, x1) of a row from the first to the last that takes
-// level k (k_row[x] == k), by the C library's byte searches; empty when
-// none does.
-std::pair<int, int> level_span(const std::uint8_t* k_row, int k, int cols) {
-  const void* first = std::memchr(k_row, k, size_t(cols));
-  if (!first) return {0, 0};
-  const void* last = memrchr(k_row, k, size_t(cols));
-  return {int(static_cast<const std::uint8_t*>(first) - k_row),
-          int(static_cast<const std::uint8_t*>(last) - k_row) + 1};
+// Calls take(x0, x1) for each run [x0, x1) of a row's pixels that take
+// level k (k_row[x] == k).
+template <typename Take>
+void for_runs_of(const std::uint8_t* k_row, int k, int cols, Take take) {
+  for (int x = 0; x < cols;) {
+    const int e = run_end(k_row, x, cols);
+    if (k_row[x] == k) take(x, e);
+    x = e;
+  }
 }
 
 // A reduced level map read at a frame's pixels a row at a time,
@@ -296,39 +293,36 @@ void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
       across[size_t(i)] = std::make_unique<BilinearAxis>(image.cols, kept[size_t(i)].cols, 1.0f / float(factor[size_t(i)]));
       down[size_t(i)] = std::make_unique<BilinearAxis>(image.rows, kept[size_t(i)].rows, 1.0f / float(factor[size_t(i)]));
     }
-  // Row by row, each level the row's pixels take: a reduced one's two rows
-  // enlarged across (each once per stripe, kept while the stripe's rows
-  // read it) and blended down, into the pixels that take it; the same
-  // products and sums, in the same order, as a blend of four neighbours.
+  // Row by row, run by run of pixels that take one level: a reduced one's
+  // two rows enlarged across (each once per stripe, kept while the
+  // stripe's rows read it) and blended down straight into the run's
+  // pixels; the same products and sums, in the same order, as a blend of
+  // four neighbours. Each pixel is written once, by its own level.
   cv::parallel_for_(
       cv::Range(0, image.rows),
       [&](const cv::Range& rows) {
         std::vector<std::optional<EnlargedRows>> enlarged(size_t(deepest) + 1);
-        std::vector<float> blended;
         for (int y = rows.start; y < rows.end; ++y) {
           if (row_deepest[size_t(y)] == 0) continue;
           const std::uint8_t* k_row = first.ptr<std::uint8_t>(y);
           float* out = image.ptr<float>(y);
-          for (int k = 1; k <= deepest; ++k) {
+          for (int x = 0; x < image.cols;) {
+            const int e = run_end(k_row, x, image.cols), k = k_row[x];
             const cv::Mat& m = kept[size_t(k)];
-            // Written already, or the image itself (every level a copy).
-            if (m.empty() || m.data == image.data) continue;
-            // Only the span of the row's pixels that take it (none: not taken).
-            const auto [x0, x1] = level_span(k_row, k, image.cols);
-            if (x0 >= x1) continue;
-            const float* from = nullptr;
-            if (factor[size_t(k)] == 1) {
-              from = m.ptr<float>(y);
-            } else {
-              if (!enlarged[size_t(k)]) enlarged[size_t(k)].emplace(m, *across[size_t(k)], image.cols);
-              const BilinearAxis& ay = *down[size_t(k)];
-              blended.resize(size_t(image.cols) * 3);
-              blend_rows(enlarged[size_t(k)]->row(ay.lo[size_t(y)]) + 3 * x0,
-                         enlarged[size_t(k)]->row(ay.hi[size_t(y)]) + 3 * x0, ay.w[size_t(y)], blended.data() + 3 * x0,
-                         3 * (x1 - x0));
-              from = blended.data();
+            // Level 0 (the image), a level written already, or the image
+            // itself (every level a copy): nothing to write.
+            if (k > 0 && !m.empty() && m.data != image.data) {
+              if (factor[size_t(k)] == 1) {
+                std::memcpy(out + 3 * x, m.ptr<float>(y) + 3 * x, sizeof(float) * 3 * size_t(e - x));
+              } else {
+                if (!enlarged[size_t(k)]) enlarged[size_t(k)].emplace(m, *across[size_t(k)], image.cols);
+                const BilinearAxis& ay = *down[size_t(k)];
+                const float* upper = enlarged[size_t(k)]->row(ay.lo[size_t(y)]);
+                const float* lower = enlarged[size_t(k)]->row(ay.hi[size_t(y)]);
+                blend_rows(upper + 3 * x, lower + 3 * x, ay.w[size_t(y)], out + 3 * x, 3 * (e - x));
+              }
             }
-            take_level(k_row + x0, std::uint8_t(k), from + 3 * x0, out + 3 * x0, x1 - x0);
+            x = e;
           }
         }
       },
@@ -338,10 +332,11 @@ void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
 void AcuityLoss::write_full_row(cv::Mat& image, const cv::Mat& first, const std::vector<std::uint8_t>& row_deepest,
                                 int k, const cv::Mat& level, int y) {
   if (row_deepest[size_t(y)] < k) return;
-  const std::uint8_t* k_row = first.ptr<std::uint8_t>(y);
-  const auto [x0, x1] = level_span(k_row, k, image.cols);
-  if (x0 < x1)
-    take_level(k_row + x0, std::uint8_t(k), level.ptr<float>(y) + 3 * x0, image.ptr<float>(y) + 3 * x0, x1 - x0);
+  const float* from = level.ptr<float>(y);
+  float* out = image.ptr<float>(y);
+  for_runs_of(first.ptr<std::uint8_t>(y), k, image.cols, [&](int x0, int x1) {
+    std::memcpy(out + 3 * x0, from + 3 * x0, sizeof(float) * 3 * size_t(x1 - x0));
+  });
 }
 
 void AcuityLoss::write_full_level(cv::Mat& image, const cv::Mat& first, const std::vector<std::uint8_t>& row_deepest,

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 
 #include <opencv2/imgproc.hpp>
 
@@ -80,6 +81,52 @@ TEST(AcuityLevels, ALevelIsTheSameWhicheverOthersTheFrameTakes) {
       loss.apply(alone, cv::Mat(size, CV_32F, cv::Scalar(0.5 * (tau[size_t(k - 1)] + tau[size_t(k)]))));
       const cv::Rect r(third * 64, 0, 64, size.height);
       EXPECT_EQ(cv::norm(mixed(r), alone(r), cv::NORM_INF), 0.0) << "band " << k << ", pyramid " << pyramid;
+    }
+  }
+}
+
+TEST(AcuityLevels, EveryPixelOfAMosaicTakesItsOwnLevel) {
+  // Runs of 1 to 19 pixels, each of one level (bands 3 to 6 or nothing
+  // lost), starting anywhere against 8-byte boundaries, the last run of a
+  // row cut by its end: each pixel as its level alone over the whole
+  // image makes it, bit for bit, and a pixel that keeps every band as it was.
+  const cv::Size size(203, 41);
+  cv::Mat image(size, CV_32FC3);
+  cv::randu(image, 0.0, 1.0);
+  for (double pyramid : {0.0, 1.5, 6.0}) {
+    AcuityParams p;
+    p.pyramid_from_px = pyramid;
+    const AcuityLoss loss(p, 64.0, 1);
+    const std::vector<double>& tau = loss.thresholds();
+    const auto level_of_band = [&](int k) {
+      return k == 0 ? float(tau.front() + 1.0) : float(0.5 * (tau[size_t(k - 1)] + tau[size_t(k)]));
+    };
+    const int bands[] = {0, 3, 4, 5, 6};
+    cv::Mat band(size, CV_8U), level(size, CV_32F);
+    cv::RNG rng(7);
+    for (int y = 0; y < size.height; ++y)
+      for (int x = 0; x < size.width;) {
+        const int k = bands[rng.uniform(0, 5)], n = rng.uniform(1, 20);
+        for (int e = std::min(x + n, size.width); x < e; ++x) {
+          band.at<std::uint8_t>(y, x) = std::uint8_t(k);
+          level.at<float>(y, x) = level_of_band(k);
+        }
+      }
+    cv::Mat mosaic = image.clone();
+    loss.apply(mosaic, level);
+    for (int k : bands) {
+      cv::Mat alone = image.clone();
+      loss.apply(alone, cv::Mat(size, CV_32F, cv::Scalar(level_of_band(k))));
+      int differing = 0, pixels = 0;
+      for (int y = 0; y < size.height; ++y)
+        for (int x = 0; x < size.width; ++x)
+          if (band.at<std::uint8_t>(y, x) == k) {
+            ++pixels;
+            differing += std::memcmp(&mosaic.at<cv::Vec3f>(y, x), &alone.at<cv::Vec3f>(y, x), sizeof(cv::Vec3f)) != 0;
+          }
+      EXPECT_GT(pixels, 1000) << "band " << k;
+      EXPECT_EQ(differing, 0) << "band " << k << ", pyramid " << pyramid;
+      if (k > 0) EXPECT_GT(cv::norm(alone, image, cv::NORM_INF), 0.01) << "band " << k;  // a blur, not the image
     }
   }
 }
