@@ -297,7 +297,7 @@ void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
   // two rows enlarged across (each once per stripe, kept while the
   // stripe's rows read it) and blended down straight into the run's
   // pixels; the same products and sums, in the same order, as a blend of
-  // four neighbours. Each pixel is written once, by its own level.
+  // four neighbours. Each pixel is written at most once, by its own level.
   cv::parallel_for_(
       cv::Range(0, image.rows),
       [&](const cv::Range& rows) {

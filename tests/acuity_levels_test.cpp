@@ -63,7 +63,7 @@ TEST(AcuityLevels, ALevelIsTheSameWhicheverOthersTheFrameTakes) {
   const cv::Size size(192, 96);
   cv::Mat image(size, CV_32FC3);
   cv::randu(image, 0.0, 1.0);
-  for (double pyramid : {0.0, 1.5, 6.0}) {
+  for (double pyramid : {0.0, 1.2, 2.5, 3.0}) {
     AcuityParams p;
     p.pyramid_from_px = pyramid;
     const AcuityLoss loss(p, 64.0, 1);
@@ -90,10 +90,12 @@ TEST(AcuityLevels, EveryPixelOfAMosaicTakesItsOwnLevel) {
   // lost), starting anywhere against 8-byte boundaries, the last run of a
   // row cut by its end: each pixel as its level alone over the whole
   // image makes it, bit for bit, and a pixel that keeps every band as it was.
+  // Levels held at full resolution (pyramid 0), as in `fast` (1.2) and
+  // `balanced` (2.5), and with the deepest alone reduced (3.0).
   const cv::Size size(203, 41);
   cv::Mat image(size, CV_32FC3);
   cv::randu(image, 0.0, 1.0);
-  for (double pyramid : {0.0, 1.5, 6.0}) {
+  for (double pyramid : {0.0, 1.2, 2.5, 3.0}) {
     AcuityParams p;
     p.pyramid_from_px = pyramid;
     const AcuityLoss loss(p, 64.0, 1);
