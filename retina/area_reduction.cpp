@@ -49,6 +49,32 @@ void add_row_term(const float* __restrict sums, float weight, float* __restrict 
   for (int v = 0; v < n; ++v) out[v] = out[v] + weight * sums[v];
 }
 
+// cv::resize's whole-factor path for three-channel floats (OpenCV's
+// resizeAreaFast_, which has vector code only for one or four channels):
+// output value = (0 + the block's values four at a time, s = s + (((a + b)
+// + c) + d), in the order of its offsets (row after row, left to right),
+// the rest one at a time) times 1.f / area. Here a pixel's three sums in
+// one vector; the row's last pixel loads three floats, the others four.
+template <bool last>
+inline PixelVector block_value(const float* p, const int* offsets, int area) {
+  const auto at = [&](int k) { return last ? three_floats(p + offsets[k]) : four_floats(p + offsets[k]); };
+  PixelVector sum = {0, 0, 0, 0};
+  int k = 0;
+  for (; k <= area - 4; k += 4) sum = sum + (((at(k) + at(k + 1)) + at(k + 2)) + at(k + 3));
+  for (; k < area; ++k) sum = sum + at(k);
+  return sum;
+}
+
+void whole_factor_row(const float* in, const int* offsets, int area, int step_x, int pixels, float* out) {
+  const float scale = 1.f / float(area);
+  const PixelVector scales = {scale, scale, scale, scale};
+  for (int d = 0; d + 1 < pixels; ++d)
+    store_three(out + 3 * size_t(d), block_value<false>(in + size_t(d) * step_x, offsets, area) * scales);
+  if (pixels > 0)
+    store_three(out + 3 * size_t(pixels - 1),
+                block_value<true>(in + size_t(pixels - 1) * step_x, offsets, area) * scales);
+}
+
 }  // namespace
 
 // cv::resize's area taps (OpenCV's imgproc/resize.cpp, computeResizeAreaTab):
@@ -82,7 +108,12 @@ AreaReduction::AreaReduction(cv::Size from, cv::Size to) : from_(from), to_(to) 
   CV_Assert(!from.empty() && !to.empty());
   const double sx = input_per_output(from.width, to.width), sy = input_per_output(from.height, to.height);
   // (A pixel's taps: its input pixels, at most the reduction rounded up, + 1.)
-  ours_ = sx >= 1.0 && sy >= 1.0 && !(whole(sx) && whole(sy)) && from != to && sx < kMostTaps - 1;
+  whole_ = whole(sx) && whole(sy) && from != to && sx >= 1.0 && sy >= 1.0;
+  if (whole_) {
+    factor_ = {cvRound(sx), cvRound(sy)};
+    CV_Assert(from.width == factor_.width * to.width && from.height == factor_.height * to.height);
+  }
+  ours_ = sx >= 1.0 && sy >= 1.0 && !whole_ && from != to && sx < kMostTaps - 1;
   if (!ours_) return;
   const Axis x(from.width, to.width);
   first_ = x.first;
@@ -99,11 +130,24 @@ AreaReduction::AreaReduction(cv::Size from, cv::Size to) : from_(from), to_(to) 
 
 void AreaReduction::apply(const cv::Mat& in, cv::Mat& out) const {
   CV_Assert(in.size() == from_ && out.data != in.data);
-  if (!ours_ || in.type() != CV_32FC3) {
+  if (!(ours_ || whole_) || in.type() != CV_32FC3) {
     cv::resize(in, out, to_, 0, 0, cv::INTER_AREA);
     return;
   }
   out.create(to_, CV_32FC3);
+  if (whole_) {
+    // The block's offsets from its first value, in floats, row after row.
+    const size_t step = in.step1();
+    std::vector<int> offsets;
+    for (int sy = 0; sy < factor_.height; ++sy)
+      for (int sx = 0; sx < factor_.width; ++sx) offsets.push_back(int(sy * step) + 3 * sx);
+    cv::parallel_for_(cv::Range(0, to_.height), [&](const cv::Range& rows) {
+      for (int y = rows.start; y < rows.end; ++y)
+        whole_factor_row(in.ptr<float>(y * factor_.height), offsets.data(), int(offsets.size()), 3 * factor_.width,
+                         to_.width, out.ptr<float>(y));
+    });
+    return;
+  }
   const int n = 3 * to_.width;
   // One stripe of output rows per thread, each with a row sum buffer made
   // by the calling thread (the frame loop asks the allocator for the same

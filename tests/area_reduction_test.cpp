@@ -4,8 +4,9 @@
 // way up to the most taps it takes, one axis whole and the other not, one
 // output column, a region of a larger image and an exactly sized one,
 // values from 1e-9 to 1e9 cd/m^2 in one image with zeros, an infinity and
-// a NaN; and the cases it hands to cv::resize (whole factors, enlargement,
-// one channel, reductions past its taps).
+// a NaN; whole factors each way (OpenCV's other path: `fast`'s grid); and
+// the cases it hands to cv::resize (enlargement, one channel, reductions
+// past its taps).
 #include "retina/area_reduction.hpp"
 
 #include <gtest/gtest.h>
@@ -63,10 +64,21 @@ TEST(AreaReduction, IsCvResizesAreaMeanBitForBit) {
   for (const auto& [from, to] : cases) expect_as_opencv(scene(from, CV_32FC3, random), to, true);
 }
 
-TEST(AreaReduction, LeavesWholeFactorsEnlargementsAndOtherTypesToOpenCv) {
+TEST(AreaReduction, IsCvResizesWholeFactorPathBitForBit) {
+  cv::RNG random(8);
+  const std::pair<cv::Size, cv::Size> cases[] = {
+      {{1920, 1080}, {480, 270}},  // fast's grid at 1080p: 16 values, four groups of a row each
+      {{96, 60}, {24, 15}},        // the same factor, small
+      {{99, 60}, {33, 20}},        // 3 each way: groups of four across rows, one value left
+      {{40, 30}, {20, 15}},        // 2 each way: one group (halve_frame.hpp's)
+      {{40, 30}, {40, 15}},        // 1 and 2: two values, none in a group
+      {{5, 9}, {1, 1}},            // 5 and 9: one output pixel, the row's last
+  };
+  for (const auto& [from, to] : cases) expect_as_opencv(scene(from, CV_32FC3, random), to, true);
+}
+
+TEST(AreaReduction, LeavesEnlargementsAndOtherTypesToOpenCv) {
   cv::RNG random(6);
-  expect_as_opencv(scene({96, 60}, CV_32FC3, random), {24, 15}, false);  // 4 each way: OpenCV's other path
-  expect_as_opencv(scene({5, 9}, CV_32FC3, random), {1, 1}, false);      // 5 and 9: the same
   expect_as_opencv(scene({96, 60}, CV_32FC3, random), {100, 30}, false);  // wider
   expect_as_opencv(scene({97, 61}, CV_32FC3, random), {13, 7}, false);   // 7.5 across: past the taps
   expect_as_opencv(scene({96, 60}, CV_32FC1, random), {31, 17}, true);   // (made by cv::resize at apply())
