@@ -107,12 +107,12 @@ AreaReduction::Axis::Axis(int from, int to) {
 AreaReduction::AreaReduction(cv::Size from, cv::Size to) : from_(from), to_(to) {
   CV_Assert(!from.empty() && !to.empty());
   const double sx = input_per_output(from.width, to.width), sy = input_per_output(from.height, to.height);
-  // (A pixel's taps: its input pixels, at most the reduction rounded up, + 1.)
   whole_ = whole(sx) && whole(sy) && from != to && sx >= 1.0 && sy >= 1.0;
   if (whole_) {
     factor_ = {cvRound(sx), cvRound(sy)};
     CV_Assert(from.width == factor_.width * to.width && from.height == factor_.height * to.height);
   }
+  // (A pixel's taps: its input pixels, at most the reduction rounded up, + 1.)
   ours_ = sx >= 1.0 && sy >= 1.0 && !whole_ && from != to && sx < kMostTaps - 1;
   if (!ours_) return;
   const Axis x(from.width, to.width);

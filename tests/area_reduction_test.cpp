@@ -72,6 +72,9 @@ TEST(AreaReduction, IsCvResizesWholeFactorPathBitForBit) {
       {{99, 60}, {33, 20}},        // 3 each way: groups of four across rows, one value left
       {{40, 30}, {20, 15}},        // 2 each way: one group (halve_frame.hpp's)
       {{40, 30}, {40, 15}},        // 1 and 2: two values, none in a group
+      {{60, 30}, {20, 30}},        // 3 and 1: three values, none in a group
+      {{40, 30}, {10, 30}},        // 4 and 1: one group within a row
+      {{64, 48}, {8, 6}},          // 8 each way: 64 values, past the general path's taps
       {{5, 9}, {1, 1}},            // 5 and 9: one output pixel, the row's last
   };
   for (const auto& [from, to] : cases) expect_as_opencv(scene(from, CV_32FC3, random), to, true);
@@ -87,16 +90,18 @@ TEST(AreaReduction, LeavesEnlargementsAndOtherTypesToOpenCv) {
 TEST(AreaReduction, GivesTheSameValuesWhateverTheThreads) {
   cv::RNG random(7);
   const cv::Mat frame = scene({1920, 1080}, CV_32FC3, random);
-  const AreaReduction reduction(frame.size(), {595, 335});
-  const int threads = cv::getNumThreads();
-  cv::Mat one, many;
-  cv::setNumThreads(1);
-  reduction.apply(frame, one);
-  cv::setNumThreads(7);
-  reduction.apply(frame, many);
-  cv::setNumThreads(threads);
-  for (int y = 0; y < one.rows; ++y)
-    ASSERT_EQ(std::memcmp(one.ptr(y), many.ptr(y), size_t(one.cols) * one.elemSize()), 0) << "row " << y;
+  for (const cv::Size to : {cv::Size(595, 335), cv::Size(480, 270)}) {  // balanced's grid, and fast's (whole)
+    const AreaReduction reduction(frame.size(), to);
+    const int threads = cv::getNumThreads();
+    cv::Mat one, many;
+    cv::setNumThreads(1);
+    reduction.apply(frame, one);
+    cv::setNumThreads(7);
+    reduction.apply(frame, many);
+    cv::setNumThreads(threads);
+    for (int y = 0; y < one.rows; ++y)
+      ASSERT_EQ(std::memcmp(one.ptr(y), many.ptr(y), size_t(one.cols) * one.elemSize()), 0) << to << " row " << y;
+  }
 }
 
 }  // namespace
