@@ -1,4 +1,5 @@
 #include "glare/fft_convolver.hpp"
+#include "glare/channel_rows.hpp"
 
 #include "glare/fftw_planner.hpp"
 #include "glare/huge_pages.hpp"
@@ -46,6 +47,13 @@ struct Fftw {
 
 
 constexpr int kColumnBlock = 16;  // columns transformed together (fixed: results do not depend on threads)
+
+// The most memory the three channels' spectra may take to be held at once:
+// `fast`'s near plane at 1080p (14 MB) is held so, and goes 6 % faster in
+// the bench; `balanced`'s middle level (20 MB) took 15 MiB more and no
+// time measurably less, so it stays one channel at a time
+// (docs/performance.md).
+constexpr size_t kChannelsTogetherBytes = size_t(16) << 20;
 
 // The per-value loops, compiled for AVX-512 and AVX2 beside the baseline
 // (glare/vector_clones.hpp: no FMA, so every version gives the same bytes).
@@ -162,8 +170,11 @@ class RowColumnEngine final : public FftConvolver::Engine {
                              x < nc_ ? T(s[size_t(y) * nc_ + x][0]) : T(0);
                    });
     std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-    data_ = F::complex(size_t(ny) * stride_);
-    prefer_huge_pages(data_, sizeof(F::Complex) * size_t(ny) * stride_);
+    // Every channel's spectrum at once where the three take at most
+    // kChannelsTogetherBytes, else one.
+    spectra_held_ = 3 * sizeof(F::Complex) * size_t(ny) * stride_ <= kChannelsTogetherBytes ? 3 : 1;
+    data_ = F::complex(size_t(spectra_held_) * ny * stride_);
+    prefer_huge_pages(data_, sizeof(F::Complex) * size_t(spectra_held_) * ny * stride_);
     T* row = F::real(size_t(nx));
     F::Complex* spectrum_row = F::complex(size_t(nc_));
     forward_row_ = F::r2c(nx, row, spectrum_row);
@@ -193,29 +204,45 @@ class RowColumnEngine final : public FftConvolver::Engine {
   void convolve(const cv::Mat& rgb, const ChannelWeights& w, cv::Mat& out) const override {
     CV_Assert(rgb.type() == CV_32FC3 && rgb.cols == width_ && rgb.rows == height_);
     out.create(rgb.size(), CV_32FC3);
-    // One channel after the other through one spectrum's memory.
-    for (int c = 0; c < 3; ++c) convolve_channel(rgb, w[size_t(c)], c, out);
+    if (spectra_held_ == 3)
+      convolve_channels(rgb, w, 0, out);
+    else  // one channel after the other through one spectrum's memory
+      for (int c = 0; c < 3; ++c) convolve_channels(rgb, w, c, out);
   }
 
  private:
-  void convolve_channel(const cv::Mat& rgb, const PsfWeights& w, int c, cv::Mat& out) const {
+  // Channels [first, first + spectra_held_) of `rgb` convolved into `out`:
+  // every channel a row pass reads or writes in one sweep of the frame's
+  // row, and in the column pass each block's channels one after the other
+  // while its kernel values are in the cache.
+  void convolve_channels(const cv::Mat& rgb, const ChannelWeights& w, int first, cv::Mat& out) const {
+    const int held = spectra_held_;
     // Rows: r2c of the frame's rows; the padding rows are 0.
     cv::parallel_for_(cv::Range(0, ny), [&](const cv::Range& r) {
-      T* row = F::real(size_t(nx));
+      T* rows[3] = {};
+      for (int i = 0; i < held; ++i) rows[i] = F::real(size_t(nx));
       F::Complex* spectrum = F::complex(size_t(stride_));
       for (int y = r.start; y < r.end; ++y) {
-        if (y >= height_) {
-          std::memset(static_cast<void*>(spectrum), 0, sizeof(F::Complex) * size_t(stride_));
-        } else {
-          channel_to_row(rgb.ptr<float>(y), c, width_, row);
-          std::fill(row + width_, row + nx, T(0));
-          F::r2c(forward_row_, row, spectrum);
-          std::memset(static_cast<void*>(spectrum + nc_), 0, sizeof(F::Complex) * size_t(stride_ - nc_));
+        if (y < height_) {
+          if (held == 3)
+            split_row(rgb.ptr<float>(y), width_, rows[0], rows[1], rows[2]);
+          else
+            channel_to_row(rgb.ptr<float>(y), first, width_, rows[0]);
         }
-        for (int b = 0; b < stride_ / kColumnBlock; ++b)
-          std::memcpy(static_cast<void*>(at(b, y)), spectrum + b * kColumnBlock, sizeof(F::Complex) * kColumnBlock);
+        for (int i = 0; i < held; ++i) {
+          if (y >= height_) {
+            std::memset(static_cast<void*>(spectrum), 0, sizeof(F::Complex) * size_t(stride_));
+          } else {
+            std::fill(rows[i] + width_, rows[i] + nx, T(0));
+            F::r2c(forward_row_, rows[i], spectrum);
+            std::memset(static_cast<void*>(spectrum + nc_), 0, sizeof(F::Complex) * size_t(stride_ - nc_));
+          }
+          for (int b = 0; b < stride_ / kColumnBlock; ++b)
+            std::memcpy(static_cast<void*>(at(i, b, y)), spectrum + b * kColumnBlock,
+                        sizeof(F::Complex) * kColumnBlock);
+        }
       }
-      F::free(row);
+      for (int i = 0; i < held; ++i) F::free(rows[i]);
       F::free(spectrum);
     });
     // Columns: forward, times the channel's kernel, back; block by block,
@@ -225,46 +252,59 @@ class RowColumnEngine final : public FftConvolver::Engine {
     const int blocks = (nc_ + kColumnBlock - 1) / kColumnBlock;
     const int shares = std::min(blocks, std::max(1, cv::getNumThreads()));
     while (int(columns_.size()) < shares) columns_.push_back(F::complex(size_t(ny) * kColumnBlock));
-    const T weight[4] = {T(w.core), T(w.inner), T(w.outer), T(w.halo)};
     cv::parallel_for_(cv::Range(0, shares), [&](const cv::Range& r) {
       for (int k = r.start; k < r.end; ++k)
       for (int b = k; b < blocks; b += shares) {
         const int x0 = b * kColumnBlock;
         const int n = std::min(kColumnBlock, nc_ - x0), partial = n < kColumnBlock;
-        F::Complex* block = at(b, 0);
-        T* column = reinterpret_cast<T*>(columns_[size_t(k)]);  // column j's value y at 2 (j ny + y)
-        block_to_columns(reinterpret_cast<const T*>(block), n, ny, column);
-        F::c2c(column_[0][partial], columns_[size_t(k)]);
         const size_t start = size_t(b) * ny * kColumnBlock;
-        const T* kernel[4] = {spectra_[0].get() + start, spectra_[1].get() + start, spectra_[2].get() + start,
-                              spectra_[3 + c].get() + start};
-        multiply_by_combined(column, kernel, weight, size_t(n) * size_t(ny));
-        F::c2c(column_[1][partial], columns_[size_t(k)]);
-        columns_to_block(column, n, ny, reinterpret_cast<T*>(block));
+        for (int i = 0; i < held; ++i) {
+          const int c = first + i;
+          const PsfWeights& wc = w[size_t(c)];
+          const T weight[4] = {T(wc.core), T(wc.inner), T(wc.outer), T(wc.halo)};
+          F::Complex* block = at(i, b, 0);
+          T* column = reinterpret_cast<T*>(columns_[size_t(k)]);  // column j's value y at 2 (j ny + y)
+          block_to_columns(reinterpret_cast<const T*>(block), n, ny, column);
+          F::c2c(column_[0][partial], columns_[size_t(k)]);
+          const T* kernel[4] = {spectra_[0].get() + start, spectra_[1].get() + start, spectra_[2].get() + start,
+                                spectra_[3 + c].get() + start};
+          multiply_by_combined(column, kernel, weight, size_t(n) * size_t(ny));
+          F::c2c(column_[1][partial], columns_[size_t(k)]);
+          columns_to_block(column, n, ny, reinterpret_cast<T*>(block));
+        }
       }
     });
     // Rows back, the frame's rows only.
     const T scale = T(1.0 / (double(nx) * ny));
     cv::parallel_for_(cv::Range(0, height_), [&](const cv::Range& r) {
-      T* row = F::real(size_t(nx));
+      T* rows[3] = {};
+      for (int i = 0; i < held; ++i) rows[i] = F::real(size_t(nx));
       F::Complex* spectrum = F::complex(size_t(stride_));
       for (int y = r.start; y < r.end; ++y) {
-        for (int b = 0; b < stride_ / kColumnBlock; ++b)
-          std::memcpy(static_cast<void*>(spectrum + b * kColumnBlock), at(b, y), sizeof(F::Complex) * kColumnBlock);
-        F::c2r(backward_row_, spectrum, row);
-        row_to_channel(row, scale, c, width_, out.ptr<float>(y));
+        for (int i = 0; i < held; ++i) {
+          for (int b = 0; b < stride_ / kColumnBlock; ++b)
+            std::memcpy(static_cast<void*>(spectrum + b * kColumnBlock), at(i, b, y),
+                        sizeof(F::Complex) * kColumnBlock);
+          F::c2r(backward_row_, spectrum, rows[i]);
+        }
+        if (held == 3)
+          merge_row(rows[0], rows[1], rows[2], scale, width_, out.ptr<float>(y));
+        else
+          row_to_channel(rows[0], scale, first, width_, out.ptr<float>(y));
       }
-      F::free(row);
+      for (int i = 0; i < held; ++i) F::free(rows[i]);
       F::free(spectrum);
     });
   }
-
-  // Row y's kColumnBlock values of block b.
-  F::Complex* at(int b, int y) const { return data_ + (size_t(b) * size_t(ny) + size_t(y)) * kColumnBlock; }
+  // Row y's kColumnBlock values of block b of held spectrum i.
+  F::Complex* at(int i, int b, int y) const {
+    return data_ + size_t(i) * size_t(ny) * size_t(stride_) + (size_t(b) * size_t(ny) + size_t(y)) * kColumnBlock;
+  }
 
   int width_, height_, nc_ = 0, stride_ = 0;
   std::unique_ptr<T[]> spectra_[6];  // core, inner, outer, halo R, G, B; real, block-major, column after column in a block
-  F::Complex* data_ = nullptr;  // the spectrum of the channel being convolved
+  int spectra_held_ = 1;        // 3 (every channel at once) or 1 (one after the other)
+  F::Complex* data_ = nullptr;  // the spectra of the channels being convolved
   F::Plan forward_row_ = nullptr, backward_row_ = nullptr;
   F::Plan column_[2][2] = {};  // [forward, backward][whole block, last partial block]
   mutable std::vector<F::Complex*> columns_;  // one block's columns, one after the other, per share of the blocks

@@ -33,6 +33,29 @@ TEST(FftConvolver, SmallKernelsMatchTheDirectSum) {
   }
 }
 
+// The engine holds the three channels' spectra at once when they take at
+// most 16 MiB (`fast`'s near plane), else one after the other: both ways
+// match the direct sum, each channel with its own halo kernel. 880 x 880
+// is transformed at 896 x 896, three spectra of 896 x 464 values (whole
+// blocks of 16 columns) taking 20 MB: one at a time.
+TEST(FftConvolver, EitherWayOfHoldingTheChannelsMatchesTheDirectSum) {
+  const ComponentKernels k = random_kernels(5, 9);
+  PsfWeights w;
+  w.core = 0.6, w.inner = 0.1, w.outer = 0.1, w.halo = 0.2;
+  for (cv::Size size : {cv::Size(200, 120), cv::Size(880, 880)}) {
+    cv::Mat in(size, CV_32FC3);
+    cv::RNG(12).fill(in, cv::RNG::UNIFORM, 0.0, 100.0);
+    const FftConvolver engine(k, size.width, size.height);
+    const cv::Size t = engine.transform_size();
+    const double spectra_bytes = 3.0 * 16 * t.height * ((t.width / 2 + 1 + 15) / 16 * 16);
+    EXPECT_EQ(spectra_bytes > 16 << 20, size.width == 880) << size;
+    cv::Mat got, got64;
+    engine.convolve(in, w, got);
+    got.convertTo(got64, CV_64FC3);
+    EXPECT_LT(cv::norm(got64, direct_convolution(in, k, w), cv::NORM_INF), 1e-4) << size;
+  }
+}
+
 // Transform sizes: the smallest n >= the minimum whose prime factors are
 // 2, 3, 5 and 7, and from 64 up a multiple of 16 as well (found here by
 // trial over every candidate).
