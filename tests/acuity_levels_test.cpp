@@ -29,6 +29,29 @@ cv::Mat halves_map(const AcuityLoss& loss, cv::Size size, int k) {
   return level;
 }
 
+// A level between tau_(k-1) and tau_k (band k - 1 lost, band k kept);
+// for k = 0, above every threshold (nothing lost).
+float band_level(const AcuityLoss& loss, int k) {
+  const std::vector<double>& tau = loss.thresholds();
+  return k == 0 ? float(tau.front() + 1.0) : float(0.5 * (tau[size_t(k - 1)] + tau[size_t(k)]));
+}
+
+cv::Mat random_image(cv::Size size) {
+  cv::Mat image(size, CV_32FC3);
+  cv::randu(image, 0.0, 1.0);
+  return image;
+}
+
+// Levels held at full resolution (0), as in `fast` (1.2) and `balanced`
+// (2.5), and with the deepest alone reduced (3.0), at 64 px/deg.
+constexpr double kPyramids[] = {0.0, 1.2, 2.5, 3.0};
+
+AcuityLoss loss_with_pyramid(double pyramid) {
+  AcuityParams p;
+  p.pyramid_from_px = pyramid;
+  return AcuityLoss(p, 64.0, 1);
+}
+
 TEST(AcuityLevels, APixelAtBandKTakesTheImageBlurredToSigmaKMinusOne) {
   AcuityParams p;  // every level at full resolution
   const AcuityLoss loss(p, 64.0, 1);
@@ -61,24 +84,17 @@ TEST(AcuityLevels, ALevelIsTheSameWhicheverOthersTheFrameTakes) {
   // Thirds at bands 3, 4 and 5 (levels chained and, under fast and
   // balanced, held reduced) against each band alone over the whole image.
   const cv::Size size(192, 96);
-  cv::Mat image(size, CV_32FC3);
-  cv::randu(image, 0.0, 1.0);
-  for (double pyramid : {0.0, 1.2, 2.5, 3.0}) {
-    AcuityParams p;
-    p.pyramid_from_px = pyramid;
-    const AcuityLoss loss(p, 64.0, 1);
-    const std::vector<double>& tau = loss.thresholds();
+  const cv::Mat image = random_image(size);
+  for (double pyramid : kPyramids) {
+    const AcuityLoss loss = loss_with_pyramid(pyramid);
     cv::Mat mixed_level(size, CV_32F);
     cv::Mat mixed = image.clone();
-    for (int third = 0; third < 3; ++third) {
-      const int k = 3 + third;
-      mixed_level(cv::Rect(third * 64, 0, 64, size.height)) = float(0.5 * (tau[size_t(k - 1)] + tau[size_t(k)]));
-    }
+    for (int third = 0; third < 3; ++third) mixed_level(cv::Rect(third * 64, 0, 64, size.height)) = band_level(loss, 3 + third);
     loss.apply(mixed, mixed_level);
     for (int third = 0; third < 3; ++third) {
       const int k = 3 + third;
       cv::Mat alone = image.clone();
-      loss.apply(alone, cv::Mat(size, CV_32F, cv::Scalar(0.5 * (tau[size_t(k - 1)] + tau[size_t(k)]))));
+      loss.apply(alone, cv::Mat(size, CV_32F, cv::Scalar(band_level(loss, k))));
       const cv::Rect r(third * 64, 0, 64, size.height);
       EXPECT_EQ(cv::norm(mixed(r), alone(r), cv::NORM_INF), 0.0) << "band " << k << ", pyramid " << pyramid;
     }
@@ -90,19 +106,10 @@ TEST(AcuityLevels, EveryPixelOfAMosaicTakesItsOwnLevel) {
   // lost), starting anywhere against 8-byte boundaries, the last run of a
   // row cut by its end: each pixel as its level alone over the whole
   // image makes it, bit for bit, and a pixel that keeps every band as it was.
-  // Levels held at full resolution (pyramid 0), as in `fast` (1.2) and
-  // `balanced` (2.5), and with the deepest alone reduced (3.0).
   const cv::Size size(203, 41);
-  cv::Mat image(size, CV_32FC3);
-  cv::randu(image, 0.0, 1.0);
-  for (double pyramid : {0.0, 1.2, 2.5, 3.0}) {
-    AcuityParams p;
-    p.pyramid_from_px = pyramid;
-    const AcuityLoss loss(p, 64.0, 1);
-    const std::vector<double>& tau = loss.thresholds();
-    const auto level_of_band = [&](int k) {
-      return k == 0 ? float(tau.front() + 1.0) : float(0.5 * (tau[size_t(k - 1)] + tau[size_t(k)]));
-    };
+  const cv::Mat image = random_image(size);
+  for (double pyramid : kPyramids) {
+    const AcuityLoss loss = loss_with_pyramid(pyramid);
     const int bands[] = {0, 3, 4, 5, 6};
     cv::Mat band(size, CV_8U), level(size, CV_32F);
     cv::RNG rng(7);
@@ -111,14 +118,14 @@ TEST(AcuityLevels, EveryPixelOfAMosaicTakesItsOwnLevel) {
         const int k = bands[rng.uniform(0, 5)], n = rng.uniform(1, 20);
         for (int e = std::min(x + n, size.width); x < e; ++x) {
           band.at<std::uint8_t>(y, x) = std::uint8_t(k);
-          level.at<float>(y, x) = level_of_band(k);
+          level.at<float>(y, x) = band_level(loss, k);
         }
       }
     cv::Mat mosaic = image.clone();
     loss.apply(mosaic, level);
     for (int k : bands) {
       cv::Mat alone = image.clone();
-      loss.apply(alone, cv::Mat(size, CV_32F, cv::Scalar(level_of_band(k))));
+      loss.apply(alone, cv::Mat(size, CV_32F, cv::Scalar(band_level(loss, k))));
       int differing = 0, pixels = 0;
       for (int y = 0; y < size.height; ++y)
         for (int x = 0; x < size.width; ++x)
