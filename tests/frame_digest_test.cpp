@@ -1,5 +1,5 @@
-// The frame digest (pipeline/memory/frame_digest.hpp) against XXH3 called
-// here on each row of a packed copy of the pixels and then on the rows'
+// The frame digest (pipeline/memory/frame_digest.hpp) against XXH3's plain
+// entry point called here on each row of a packed copy of the pixels and then on the rows'
 // digests: the same for a region of a larger image (rows with gaps between
 // them) and when made a row at a time in any order, different for one
 // changed byte, a changed shape of the same bytes, or another type.
@@ -15,9 +15,12 @@ namespace eyestream::pipeline {
 namespace {
 
 TEST(FrameDigest, IsXxh3OfTheRowsXxh3sAndSeesOneByte) {
-  cv::Mat big(40, 64, CV_32FC3);
+  // Rows of 23 KB, over a 16 KB block of XXH3's long-input loop, as a
+  // 1080p frame's are: the digest uses the library's dispatch to its
+  // widest vector code, the plain entry point here its SSE2 code.
+  cv::Mat big(40, 1990, CV_32FC3);
   cv::randu(big, 0.0, 1.0);
-  const cv::Mat region = big(cv::Rect(5, 3, 30, 20));
+  const cv::Mat region = big(cv::Rect(5, 3, 1930, 20));
   ASSERT_FALSE(region.isContinuous());
   const cv::Mat packed = region.clone();
   std::vector<std::uint64_t> row_words;
@@ -37,7 +40,7 @@ TEST(FrameDigest, IsXxh3OfTheRowsXxh3sAndSeesOneByte) {
   cv::Mat changed = packed.clone();
   changed.data[1234] ^= 1;
   EXPECT_FALSE(d == frame_digest(changed));
-  EXPECT_FALSE(d == frame_digest(packed.reshape(3, 30)));  // the same bytes, 30 rows of 20
+  EXPECT_FALSE(d == frame_digest(packed.reshape(3, 1930)));  // the same bytes, 1930 rows of 20
   cv::Mat as_ints(packed.size(), CV_32SC3, packed.data);
   EXPECT_FALSE(d == frame_digest(as_ints));
 }
