@@ -1,6 +1,6 @@
 #include "glare/fft_convolver.hpp"
-#include "glare/channel_rows.hpp"
 
+#include "glare/channel_rows.hpp"
 #include "glare/fftw_planner.hpp"
 #include "glare/huge_pages.hpp"
 #include "glare/kernel_spectra.hpp"
@@ -48,11 +48,13 @@ struct Fftw {
 
 constexpr int kColumnBlock = 16;  // columns transformed together (fixed: results do not depend on threads)
 
-// The most memory the three channels' spectra may take to be held at once:
-// `fast`'s near plane at 1080p (14 MB) is held so, and goes 6 % faster in
-// the bench; `balanced`'s middle level (20 MB) took 15 MiB more and no
-// time measurably less, so it stays one channel at a time
-// (docs/performance.md).
+// The most memory the three channels' spectra may take to be held at once.
+// At 1080p `fast`'s near plane (14 MB) is held so, and its glare took 13.7
+// ms a frame in the glare bench against 14.55 one channel at a time
+// (medians of four, alternating); `balanced`'s middle level (27 MB) took
+// 51.1 against 51.45 and 11-19 MiB more in the bench, so it stays one
+// channel at a time. At 720p that level (12 MB) is held at once: 34.2
+// against 33.9 ms, the same within the machine's noise.
 constexpr size_t kChannelsTogetherBytes = size_t(16) << 20;
 
 // The per-value loops, compiled for AVX-512 and AVX2 beside the baseline
@@ -125,6 +127,7 @@ struct FftConvolver::Engine {
   virtual ~Engine() = default;
   virtual void convolve(const cv::Mat& rgb, const ChannelWeights& w, cv::Mat& out) const = 0;
   int nx = 0, ny = 0;
+  int channels_at_once = 1;
 };
 
 namespace {
@@ -132,7 +135,7 @@ namespace {
 // A 2-D transform done as row transforms (r2c, only the frame's rows) and
 // column transforms (c2c, in blocks of kColumnBlock), rows shared out
 // among threads and blocks in fixed stripes, one per thread: every row and
-// column is computed by the same plan whatever thread runs it. The
+// column is computed by the same plan whatever thread runs it. Each
 // spectrum is held block-major: a block's ny x kColumnBlock values are
 // contiguous, and each block is copied, a column after the other, into
 // its stripe's array for the column transforms (in rows of the whole
@@ -172,9 +175,9 @@ class RowColumnEngine final : public FftConvolver::Engine {
     std::lock_guard<std::mutex> lock(fftw_planner_mutex());
     // Every channel's spectrum at once where the three take at most
     // kChannelsTogetherBytes, else one.
-    spectra_held_ = 3 * sizeof(F::Complex) * size_t(ny) * stride_ <= kChannelsTogetherBytes ? 3 : 1;
-    data_ = F::complex(size_t(spectra_held_) * ny * stride_);
-    prefer_huge_pages(data_, sizeof(F::Complex) * size_t(spectra_held_) * ny * stride_);
+    channels_at_once = 3 * sizeof(F::Complex) * size_t(ny) * stride_ <= kChannelsTogetherBytes ? 3 : 1;
+    data_ = F::complex(size_t(channels_at_once) * ny * stride_);
+    prefer_huge_pages(data_, sizeof(F::Complex) * size_t(channels_at_once) * ny * stride_);
     T* row = F::real(size_t(nx));
     F::Complex* spectrum_row = F::complex(size_t(nc_));
     forward_row_ = F::r2c(nx, row, spectrum_row);
@@ -204,19 +207,19 @@ class RowColumnEngine final : public FftConvolver::Engine {
   void convolve(const cv::Mat& rgb, const ChannelWeights& w, cv::Mat& out) const override {
     CV_Assert(rgb.type() == CV_32FC3 && rgb.cols == width_ && rgb.rows == height_);
     out.create(rgb.size(), CV_32FC3);
-    if (spectra_held_ == 3)
+    if (channels_at_once == 3)
       convolve_channels(rgb, w, 0, out);
     else  // one channel after the other through one spectrum's memory
       for (int c = 0; c < 3; ++c) convolve_channels(rgb, w, c, out);
   }
 
  private:
-  // Channels [first, first + spectra_held_) of `rgb` convolved into `out`:
+  // Channels [first, first + channels_at_once) of `rgb` convolved into `out`:
   // every channel a row pass reads or writes in one sweep of the frame's
   // row, and in the column pass each block's channels one after the other
   // while its kernel values are in the cache.
   void convolve_channels(const cv::Mat& rgb, const ChannelWeights& w, int first, cv::Mat& out) const {
-    const int held = spectra_held_;
+    const int held = channels_at_once;
     // Rows: r2c of the frame's rows; the padding rows are 0.
     cv::parallel_for_(cv::Range(0, ny), [&](const cv::Range& r) {
       T* rows[3] = {};
@@ -303,7 +306,6 @@ class RowColumnEngine final : public FftConvolver::Engine {
 
   int width_, height_, nc_ = 0, stride_ = 0;
   std::unique_ptr<T[]> spectra_[6];  // core, inner, outer, halo R, G, B; real, block-major, column after column in a block
-  int spectra_held_ = 1;        // 3 (every channel at once) or 1 (one after the other)
   F::Complex* data_ = nullptr;  // the spectra of the channels being convolved
   F::Plan forward_row_ = nullptr, backward_row_ = nullptr;
   F::Plan column_[2][2] = {};  // [forward, backward][whole block, last partial block]
@@ -325,5 +327,7 @@ void FftConvolver::convolve(const cv::Mat& rgb, const ChannelWeights& w, cv::Mat
 }
 
 cv::Size FftConvolver::transform_size() const { return {engine_->nx, engine_->ny}; }
+
+int FftConvolver::channels_at_once() const { return engine_->channels_at_once; }
 
 }  // namespace eyestream::glare

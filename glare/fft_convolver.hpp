@@ -54,6 +54,9 @@ class FftConvolver {
 
   // The padded transform size.
   cv::Size transform_size() const;
+  // The channels whose spectra are held and transformed together: 3 where
+  // their spectra take at most 16 MiB, else 1 (one after the other).
+  int channels_at_once() const;
 
   struct Engine;
 
