@@ -13,8 +13,9 @@
 // other path (`fast`'s grid, a quarter of the frame each way), are made
 // here too as that path makes them: each value the sum of its block's
 // values, four at a time, times 1 / area. OpenCV makes one value at a
-// time: 1.8 ms for 1920 x 1080 to 480 x 270 on one thread; here a pixel's
-// three values as one vector, 1.55 ms. Other types, enlargements and
+// time, here a pixel's three values as one vector: for 1920 x 1080 to
+// 480 x 270 on one thread, 2.3-2.4 ms and 1.5-1.6 in turn in one program
+// (docs/performance.md). Other types, enlargements and
 // reductions not whole each way of 7 or more across (past the taps a
 // pixel holds here) go to cv::resize itself. On the general path, one
 // difference: OpenCV starts the first row of each of its row stripes at
