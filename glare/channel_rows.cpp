@@ -58,4 +58,14 @@ void merge_row(const double* r0, const double* r1, const double* r2, double scal
   }
 }
 
+EYESTREAM_VECTOR_CLONES
+void channel_to_row(const float* rgb, int c, int n, double* row) {
+  for (int x = 0; x < n; ++x) row[x] = double(rgb[3 * x + c]);
+}
+
+EYESTREAM_VECTOR_CLONES
+void row_to_channel(const double* row, double scale, int c, int n, float* rgb) {
+  for (int x = 0; x < n; ++x) rgb[3 * x + c] = float(std::max(row[x] * scale, 0.0));
+}
+
 }  // namespace eyestream::glare

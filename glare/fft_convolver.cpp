@@ -60,18 +60,6 @@ constexpr size_t kChannelsTogetherBytes = size_t(16) << 20;
 // The per-value loops, compiled for AVX-512 and AVX2 beside the baseline
 // (glare/vector_clones.hpp: no FMA, so every version gives the same bytes).
 
-// row[x] = channel c of n interleaved RGB pixels.
-EYESTREAM_VECTOR_CLONES
-void channel_to_row(const float* rgb, int c, int n, double* row) {
-  for (int x = 0; x < n; ++x) row[x] = double(rgb[3 * x + c]);
-}
-
-// Channel c of n interleaved RGB pixels = max(row[x] scale, 0).
-EYESTREAM_VECTOR_CLONES
-void row_to_channel(const double* row, double scale, int c, int n, float* rgb) {
-  for (int x = 0; x < n; ++x) rgb[3 * x + c] = float(std::max(row[x] * scale, 0.0));
-}
-
 // A block's n columns (complex, row y's at block[y kColumnBlock + j]) into
 // `columns`, one after the other (column j's value y at j ny + y), or back.
 EYESTREAM_VECTOR_CLONES

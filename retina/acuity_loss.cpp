@@ -75,13 +75,13 @@ int run_end(const std::uint8_t* k_row, int x, int cols) {
   return e;
 }
 
-// Calls take(x0, x1) for each run [x0, x1) of a row's pixels that take
-// level k (k_row[x] == k).
+// Calls take(x0, x1, k) for each run [x0, x1) of a row's pixels that
+// take one level k, left to right.
 template <typename Take>
-void for_runs_of(const std::uint8_t* k_row, int k, int cols, Take take) {
+void for_each_run(const std::uint8_t* k_row, int cols, Take take) {
   for (int x = 0; x < cols;) {
     const int e = run_end(k_row, x, cols);
-    if (k_row[x] == k) take(x, e);
+    take(x, e, int(k_row[x]));
     x = e;
   }
 }
@@ -306,24 +306,21 @@ void AcuityLoss::apply(cv::Mat& image, const cv::Mat& level) const {
           if (row_deepest[size_t(y)] == 0) continue;
           const std::uint8_t* k_row = first.ptr<std::uint8_t>(y);
           float* out = image.ptr<float>(y);
-          for (int x = 0; x < image.cols;) {
-            const int e = run_end(k_row, x, image.cols), k = k_row[x];
+          for_each_run(k_row, image.cols, [&](int x, int e, int k) {
             const cv::Mat& m = kept[size_t(k)];
             // Level 0 (the image), a level written already, or the image
             // itself (every level a copy): nothing to write.
-            if (k > 0 && !m.empty() && m.data != image.data) {
-              if (factor[size_t(k)] == 1) {
-                std::memcpy(out + 3 * x, m.ptr<float>(y) + 3 * x, sizeof(float) * 3 * size_t(e - x));
-              } else {
-                if (!enlarged[size_t(k)]) enlarged[size_t(k)].emplace(m, *across[size_t(k)], image.cols);
-                const BilinearAxis& ay = *down[size_t(k)];
-                const float* upper = enlarged[size_t(k)]->row(ay.lo[size_t(y)]);
-                const float* lower = enlarged[size_t(k)]->row(ay.hi[size_t(y)]);
-                blend_rows(upper + 3 * x, lower + 3 * x, ay.w[size_t(y)], out + 3 * x, 3 * (e - x));
-              }
+            if (k == 0 || m.empty() || m.data == image.data) return;
+            if (factor[size_t(k)] == 1) {
+              std::memcpy(out + 3 * x, m.ptr<float>(y) + 3 * x, sizeof(float) * 3 * size_t(e - x));
+              return;
             }
-            x = e;
-          }
+            if (!enlarged[size_t(k)]) enlarged[size_t(k)].emplace(m, *across[size_t(k)], image.cols);
+            const BilinearAxis& ay = *down[size_t(k)];
+            const float* upper = enlarged[size_t(k)]->row(ay.lo[size_t(y)]);
+            const float* lower = enlarged[size_t(k)]->row(ay.hi[size_t(y)]);
+            blend_rows(upper + 3 * x, lower + 3 * x, ay.w[size_t(y)], out + 3 * x, 3 * (e - x));
+          });
         }
       },
       double(std::max(1, cv::getNumThreads()) * 4));  // stripes of rows, each enlarging a level's row once
@@ -334,8 +331,8 @@ void AcuityLoss::write_full_row(cv::Mat& image, const cv::Mat& first, const std:
   if (row_deepest[size_t(y)] < k) return;
   const float* from = level.ptr<float>(y);
   float* out = image.ptr<float>(y);
-  for_runs_of(first.ptr<std::uint8_t>(y), k, image.cols, [&](int x0, int x1) {
-    std::memcpy(out + 3 * x0, from + 3 * x0, sizeof(float) * 3 * size_t(x1 - x0));
+  for_each_run(first.ptr<std::uint8_t>(y), image.cols, [&](int x0, int x1, int run_k) {
+    if (run_k == k) std::memcpy(out + 3 * x0, from + 3 * x0, sizeof(float) * 3 * size_t(x1 - x0));
   });
 }
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
-#include <cstring>
 #include <opencv2/imgproc.hpp>
 
 #include "retina/pixel_vector.hpp"
@@ -50,7 +49,8 @@ void add_row_term(const float* __restrict sums, float weight, float* __restrict 
 }
 
 // cv::resize's whole-factor path for three-channel floats (OpenCV's
-// resizeAreaFast_, which has vector code only for one or four channels):
+// resizeAreaFast_, which has vector code only for one or four channels;
+// retina/halve_frame.hpp makes its factor 2 alone, a row at a time):
 // output value = (0 + the block's values four at a time, s = s + (((a + b)
 // + c) + d), in the order of its offsets (row after row, left to right),
 // the rest one at a time) times 1.f / area. Here a pixel's three sums in
@@ -107,14 +107,16 @@ AreaReduction::Axis::Axis(int from, int to) {
 AreaReduction::AreaReduction(cv::Size from, cv::Size to) : from_(from), to_(to) {
   CV_Assert(!from.empty() && !to.empty());
   const double sx = input_per_output(from.width, to.width), sy = input_per_output(from.height, to.height);
-  whole_ = whole(sx) && whole(sy) && from != to && sx >= 1.0 && sy >= 1.0;
-  if (whole_) {
+  if (sx < 1.0 || sy < 1.0 || from == to) return;  // cv::resize
+  if (whole(sx) && whole(sy)) {
+    path_ = Path::kWholeFactor;
     factor_ = {cvRound(sx), cvRound(sy)};
     CV_Assert(from.width == factor_.width * to.width && from.height == factor_.height * to.height);
+    return;
   }
   // (A pixel's taps: its input pixels, at most the reduction rounded up, + 1.)
-  ours_ = sx >= 1.0 && sy >= 1.0 && !whole_ && from != to && sx < kMostTaps - 1;
-  if (!ours_) return;
+  if (!(sx < kMostTaps - 1)) return;  // cv::resize
+  path_ = Path::kGeneral;
   const Axis x(from.width, to.width);
   first_ = x.first;
   weight_.assign(size_t(to.width) * kMostTaps, 0.0f);
@@ -130,12 +132,12 @@ AreaReduction::AreaReduction(cv::Size from, cv::Size to) : from_(from), to_(to) 
 
 void AreaReduction::apply(const cv::Mat& in, cv::Mat& out) const {
   CV_Assert(in.size() == from_ && out.data != in.data);
-  if (!(ours_ || whole_) || in.type() != CV_32FC3) {
+  if (path_ == Path::kOpenCv || in.type() != CV_32FC3) {
     cv::resize(in, out, to_, 0, 0, cv::INTER_AREA);
     return;
   }
   out.create(to_, CV_32FC3);
-  if (whole_) {
+  if (path_ == Path::kWholeFactor) {
     // The block's offsets from its first value, in floats, row after row.
     const size_t step = in.step1();
     std::vector<int> offsets;

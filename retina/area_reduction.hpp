@@ -1,6 +1,6 @@
 // An image reduced by area means: what
 // cv::resize with INTER_AREA gives for three-channel floats, bit for bit
-// (OpenCV's taps, weights and order of terms: each output row is the sum
+// (on its general path, OpenCV's taps, weights and order of terms: each output row is the sum
 // of its input rows' weighted row sums, each row sum the sum of its
 // pixels' weighted values). OpenCV's loop adds one weighted value at a
 // time through a table of taps, storing and reloading the sum each time;
@@ -42,7 +42,7 @@ class AreaReduction {
   void apply(const cv::Mat& in, cv::Mat& out) const;
   // Whether apply() makes three-channel floats itself (else cv::resize
   // does).
-  bool replaces_opencv() const { return ours_ || whole_; }
+  bool replaces_opencv() const { return path_ != Path::kOpenCv; }
 
  private:
   // One axis's taps: output index d takes input indices
@@ -53,8 +53,11 @@ class AreaReduction {
     Axis(int from, int to);
   };
   cv::Size from_, to_;
-  bool ours_ = false;   // a factor not whole both ways, made here; else cv::resize
-  bool whole_ = false;  // whole factors both ways (factor_), made here as OpenCV's other path does
+  // Who makes the reduction: cv::resize; here, by the taps below (a
+  // factor not whole both ways); or here, by blocks of factor_ (whole
+  // factors both ways, as OpenCV's other path does).
+  enum class Path { kOpenCv, kGeneral, kWholeFactor };
+  Path path_ = Path::kOpenCv;
   cv::Size factor_;
   // The row sums' taps: output pixel d sums n input pixels from first_[d]
   // with weights weight_[d * kMostTaps + t]. by_taps_[n] lists the pixels

@@ -15,9 +15,9 @@ namespace eyestream::pipeline {
 namespace {
 
 TEST(FrameDigest, IsXxh3OfTheRowsXxh3sAndSeesOneByte) {
-  // Rows of 23 KB, over a 16 KB block of XXH3's long-input loop, as a
-  // 1080p frame's are: the digest uses the library's dispatch to its
-  // widest vector code, the plain entry point here its SSE2 code.
+  // Rows of 23 KB (22 of XXH3's 1 KB blocks of its long-input loop, as a
+  // 1080p frame's): the digest uses the library's dispatch to its widest
+  // vector code, the plain entry point here its SSE2 code.
   cv::Mat big(40, 1990, CV_32FC3);
   cv::randu(big, 0.0, 1.0);
   const cv::Mat region = big(cv::Rect(5, 3, 1930, 20));
