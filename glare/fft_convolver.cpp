@@ -214,16 +214,15 @@ class RowColumnEngine final : public FftConvolver::Engine {
       for (int i = 0; i < held; ++i) rows[i] = F::real(size_t(nx));
       F::Complex* spectrum = F::complex(size_t(stride_));
       for (int y = r.start; y < r.end; ++y) {
-        if (y < height_) {
-          if (held == 3)
-            split_row(rgb.ptr<float>(y), width_, rows[0], rows[1], rows[2]);
-          else
-            channel_to_row(rgb.ptr<float>(y), first, width_, rows[0]);
-        }
+        const bool padding = y >= height_;  // 0 in every channel's spectrum: zeroed once
+        if (padding)
+          std::memset(static_cast<void*>(spectrum), 0, sizeof(F::Complex) * size_t(stride_));
+        else if (held == 3)
+          split_row(rgb.ptr<float>(y), width_, rows[0], rows[1], rows[2]);
+        else
+          channel_to_row(rgb.ptr<float>(y), first, width_, rows[0]);
         for (int i = 0; i < held; ++i) {
-          if (y >= height_) {
-            std::memset(static_cast<void*>(spectrum), 0, sizeof(F::Complex) * size_t(stride_));
-          } else {
+          if (!padding) {
             std::fill(rows[i] + width_, rows[i] + nx, T(0));
             F::r2c(forward_row_, rows[i], spectrum);
             std::memset(static_cast<void*>(spectrum + nc_), 0, sizeof(F::Complex) * size_t(stride_ - nc_));
