@@ -2,18 +2,20 @@
 
 namespace eyestream::io {
 
-PrefetchSource::PrefetchSource(std::unique_ptr<FrameSource> source, size_t depth)
+PrefetchSource::PrefetchSource(std::unique_ptr<FrameSource> source, size_t depth, std::int64_t last_index)
     : source_(std::move(source)), queue_(depth) {
-  reader_ = std::thread([this] {
+  reader_ = std::thread([this, last_index] {
+    bool past_last = false;
     for (;;) {
       if (!queue_.wait_for_room()) return;  // nothing decoded is held while the queue is full
       Item item;
       try {
-        item.frame = source_->next();
+        if (!past_last) item.frame = source_->next();  // else the end
       } catch (...) {
         item.error = std::current_exception();
       }
       const bool last = !item.frame || item.error;
+      past_last = item.frame && last_index >= 0 && item.frame->index >= last_index;
       if (!queue_.push(std::move(item)) || last) return;
     }
   });

@@ -16,8 +16,10 @@ namespace eyestream::io {
 class PrefetchSource : public FrameSource {
  public:
   // Holds up to `depth` decoded frames that next() has not returned: the
-  // reader decodes a frame only once there is room for it.
-  PrefetchSource(std::unique_ptr<FrameSource> source, size_t depth = 2);
+  // reader decodes a frame only once there is room for it. With
+  // `last_index` >= 0 it decodes none after the frame of that index (the
+  // last a run wants, at --end-frame), and the source ends there.
+  PrefetchSource(std::unique_ptr<FrameSource> source, size_t depth = 2, std::int64_t last_index = -1);
   ~PrefetchSource() override;
 
   const SourceInfo& info() const override { return source_->info(); }

@@ -96,6 +96,25 @@ TEST(FrameProjection, LocalScaleAndSolidAngleAreThePinholesOwn) {
   EXPECT_NEAR(p.solid_angle_deg2() / (sr * std::pow(180.0 / M_PI, 2)), 1.0, 1e-4);
 }
 
+// Every pixel's weight is cos^3 of its angle off axis as the formula gives
+// it here, bit for bit (the program computes a quarter and mirrors it), on
+// frames of even and odd sizes.
+TEST(FrameProjection, SolidAngleWeightsAreTheCubedCosineOfEveryPixel) {
+  for (const cv::Size size : {cv::Size(64, 36), cv::Size(61, 37)}) {
+    const FrameProjection p(size.width, size.height, 90.0, Projection::rectilinear);
+    const double f = 0.5 * size.width / std::tan(0.5 * 90.0 * (M_PI / 180.0));  // f_px, as the projection has it
+    const cv::Mat w = p.solid_angle_weights();
+    ASSERT_EQ(w.size(), size);
+    int wrong = 0;
+    for (int y = 0; y < size.height; ++y)
+      for (int x = 0; x < size.width; ++x) {
+        const double X = (x + 0.5 - 0.5 * size.width) / f, Y = (y + 0.5 - 0.5 * size.height) / f;
+        wrong += w.at<float>(y, x) != float(std::pow(1.0 + X * X + Y * Y, -1.5));
+      }
+    EXPECT_EQ(wrong, 0) << size;
+  }
+}
+
 // A small light 50 deg off axis lands on the plane with its flux (luminance
 // times solid angle) kept, and a uniform frame reads uniform.
 TEST(FrameProjection, CarryingAFrameIntoThePlaneKeepsItsLight) {

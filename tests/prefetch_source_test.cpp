@@ -2,7 +2,7 @@
 // that fails to read is reported at that frame, and the reader decodes a
 // frame only when there is room for it, so it holds no more than `depth`
 // frames that next() has not returned (each a whole frame of memory at
-// 1080p).
+// 1080p), and none after the last one a run wants.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -75,6 +75,23 @@ TEST(PrefetchSource, GivesEveryFrameInOrderWithItsTime) {
   }
   EXPECT_FALSE(source.next());
   EXPECT_FALSE(source.next()) << "still nothing after the end";
+}
+
+// A run to --end-frame: the reader decodes no frame after the last one the
+// run takes (a 1080p frame's decoding and memory for nothing), and the
+// source ends there.
+TEST(PrefetchSource, DecodesNothingAfterTheLastIndex) {
+  std::atomic<int> made{0};
+  io::PrefetchSource source(std::make_unique<CountingSource>(10, -1, made), 1, 2);
+  for (int i = 0; i < 3; ++i) {
+    const std::optional<io::SceneFrame> f = source.next();
+    ASSERT_TRUE(f);
+    EXPECT_EQ(f->index, i);
+  }
+  EXPECT_EQ(made_after_waiting_for(made, 3), 3) << "frame 3 would be past the last";
+  EXPECT_FALSE(source.next());
+  EXPECT_FALSE(source.next()) << "still nothing after the end";
+  EXPECT_EQ(made.load(), 3);
 }
 
 TEST(PrefetchSource, AFrameThatFailsThrowsWhenItIsTaken) {

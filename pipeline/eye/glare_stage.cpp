@@ -7,6 +7,7 @@
 
 #include "glare/uniform_field.hpp"
 #include "glare/veiling_luminance.hpp"
+#include "pipeline/eye/grey_map.hpp"
 #include "pipeline/eye/surround_row.hpp"
 #include "retina/enlarged_rows.hpp"
 #include "retina/halve_frame.hpp"
@@ -133,6 +134,8 @@ GlareStage::GlareStage(const Plan& plan)
   std::vector<cv::Mat> shares;
   cv::split(in_frame_share(source, grey), shares);
   for (const cv::Mat& share : shares) in_frame_.push_back(share);
+  // The halo's share is coloured where its rings reach the frame's edge,
+  // else the same in every channel: then one channel holds it.
   glare::PsfWeights halo;
   halo.halo = 1.0;
   in_frame_.push_back(one_channel_if_grey(in_frame_share(source, glare::same_in_every_channel(halo))));
@@ -149,18 +152,6 @@ cv::Mat GlareStage::in_frame_source() const {
   // Odd sizes halve with other weights at their last row and column.
   const bool exact = halved_.empty() || (plan_.width % 2 == 0 && plan_.height % 2 == 0);
   return exact ? plane_->flux_of_ones() : plane_->to_plane_flux(to_glare_frame(frame_ones()));
-}
-
-cv::Mat GlareStage::one_channel_if_grey(const cv::Mat& map) {
-  // The halo's share is coloured where its rings reach the frame's edge,
-  // else the same in every channel: then one channel holds it, a third of
-  // the memory and of the reads (the core, inner and outer shares are
-  // grey by construction: the constructor keeps one channel of each).
-  std::vector<cv::Mat> channels;
-  cv::split(map, channels);
-  const bool grey = cv::norm(channels[0], channels[1], cv::NORM_INF) == 0.0 &&
-                    cv::norm(channels[0], channels[2], cv::NORM_INF) == 0.0;
-  return grey ? channels[0] : map;
 }
 
 std::optional<double> GlareStage::veil_at(const cv::Mat& luminance, double adaptation_log, double pupil_mm, double x,

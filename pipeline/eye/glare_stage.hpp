@@ -127,7 +127,6 @@ class GlareStage {
   // CV_32F when every channel holds the same); off the frame's own plane,
   // without the kept share and at moved_light's size.
   std::vector<cv::Mat> in_frame_;
-  static cv::Mat one_channel_if_grey(const cv::Mat& map);
   // Per component (core, inner, outer, halo) and channel, the kernel's
   // centre pixel.
   cv::Vec3d centre_[4];

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <mutex>
+#include <vector>
 #include <opencv2/imgproc.hpp>
 
 #include "io/error.hpp"
@@ -132,14 +133,24 @@ cv::Size2d FrameProjection::retina_reach() const {
     edge.push_back({0.0, u * frame_.height});
     edge.push_back({double(frame_.width), u * frame_.height});
   }
+  // Each gaze's axes once for all its points; the gazes in parallel (a
+  // largest value does not depend on the order it is found in).
   double across = 0.0, down = 0.0;
-  for (const cv::Point2d& gaze : edge) {
-    for (const cv::Point2d& p : edge) {
-      const cv::Vec2d o = gaze_offset(gaze, p);
-      across = std::max(across, std::abs(o[0]));
-      down = std::max(down, std::abs(o[1]));
+  std::mutex m;
+  cv::parallel_for_(cv::Range(0, int(edge.size())), [&](const cv::Range& r) {
+    double a = 0.0, d = 0.0;
+    for (int g = r.start; g < r.end; ++g) {
+      const GazeAxes axes = gaze_axes(edge[size_t(g)]);
+      for (const cv::Point2d& p : edge) {
+        const cv::Vec2d o = offset_from(axes, p);
+        a = std::max(a, std::abs(o[0]));
+        d = std::max(d, std::abs(o[1]));
+      }
     }
-  }
+    const std::lock_guard<std::mutex> lock(m);
+    across = std::max(across, a);
+    down = std::max(down, d);
+  });
   return {across + 1.0, down + 1.0};  // a pixel's margin for the interpolation
 }
 
@@ -210,11 +221,29 @@ double FrameProjection::solid_angle_deg2() const {
 cv::Mat FrameProjection::solid_angle_weights() const {
   cv::Mat w(frame_, CV_32F, cv::Scalar(1.0));
   if (kind_ == Projection::equidistant) return w;
-  for (int y = 0; y < frame_.height; ++y)
-    for (int x = 0; x < frame_.width; ++x) {
-      const double X = (x + 0.5 - 0.5 * frame_.width) / f_px_, Y = (y + 0.5 - 0.5 * frame_.height) / f_px_;
-      w.at<float>(y, x) = float(std::pow(1.0 + X * X + Y * Y, -1.5));  // cos^3 of the angle off axis
+  // cos^3 of the angle off axis, (1 + X^2 + Y^2)^-1.5. A column's X and its
+  // mirror's are exact negatives (halves and integers), and likewise for
+  // rows, so each value is computed once for a quarter of the frame and
+  // placed four times; the squares are each column's and row's own.
+  const auto squares = [&](int n) {
+    std::vector<double> s(size_t(n + 1) / 2);
+    for (int i = 0; i < int(s.size()); ++i) {
+      const double t = (i + 0.5 - 0.5 * n) / f_px_;
+      s[size_t(i)] = t * t;
     }
+    return s;
+  };
+  const std::vector<double> xx = squares(frame_.width), yy = squares(frame_.height);
+  cv::parallel_for_(cv::Range(0, int(yy.size())), [&](const cv::Range& r) {
+    for (int y = r.start; y < r.end; ++y) {
+      float* top = w.ptr<float>(y);
+      float* bottom = w.ptr<float>(frame_.height - 1 - y);
+      for (int x = 0; x < int(xx.size()); ++x) {
+        const float v = float(std::pow(1.0 + xx[size_t(x)] + yy[size_t(y)], -1.5));
+        top[x] = top[frame_.width - 1 - x] = bottom[x] = bottom[frame_.width - 1 - x] = v;
+      }
+    }
+  });
   return w;
 }
 

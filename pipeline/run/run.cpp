@@ -218,10 +218,15 @@ RunSummary run(const Settings& s) {
   // the one being decoded or queued; a video knows it only by decoding, and
   // three are held, the next one taken early for its time. The decoder
   // waits for room before it decodes another.
-  if (overlap_io(s)) source = std::make_unique<io::PrefetchSource>(std::move(source), 1);
+  // With --end-frame it decodes nothing the run will not take: a file
+  // sequence's last frame is the one before it, a video's the one at it
+  // (decoded for its time).
+  const bool times_known = source->knows_times();  // a property of the source, for the whole sequence
+  if (overlap_io(s))
+    source = std::make_unique<io::PrefetchSource>(std::move(source), 1,
+                                                  s.end_frame > 0 ? s.end_frame - (times_known ? 1 : 0) : -1);
   const std::int64_t first_processed =
       std::max<std::int64_t>(0, s.start_frame - std::int64_t(std::ceil(s.preroll_s * info.frames_per_second)));
-  const bool times_known = source->knows_times();  // a property of the source, for the whole sequence
   std::optional<io::SceneFrame> current = source->next();
   const std::int64_t skip_to = std::max(first_processed, resume_from);
   while (current && current->index < skip_to) current = source->next();  // before the pre-roll or the checkpoint
