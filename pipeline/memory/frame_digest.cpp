@@ -1,10 +1,11 @@
 #include "pipeline/memory/frame_digest.hpp"
 
-// On x86-64, the library's own dispatch to its widest vector code on this
-// CPU (AVX2 or AVX-512; the plain entry points are built for SSE2): the
-// same digest, made in 1.2 ms instead of 1.7 for a 1080p frame's rows on
-// one thread (a micro-benchmark, 2026-12-06).
-#if defined(__x86_64__)
+// Where libxxhash has it (x86-64 builds that export it; CMake checks), the
+// library's own dispatch to its widest vector code on this CPU (AVX2 or
+// AVX-512; the plain entry points are built for SSE2): the same digest,
+// made in 1.2 ms instead of 1.7 for a 1080p frame's rows on one thread (a
+// micro-benchmark, 2026-12-06).
+#if defined(EYESTREAM_XXH_DISPATCH)
 #define XXH_DISPATCH_DISABLE_REPLACE
 #include <xxh_x86dispatch.h>
 #define EYESTREAM_XXH3_128 XXH3_128bits_dispatch
