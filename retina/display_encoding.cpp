@@ -30,11 +30,12 @@ void clamp_row(const float* in, float* out, int n) {
   }
 }
 
-// The dither's three uniforms of each pixel (hash_uniform3 of its key).
+// The dither's three uniforms of each of `pixels` pixels from column x0
+// on (hash_uniform3 of its key).
 EYESTREAM_VECTOR_CLONES
-void dither_row(std::uint64_t row_key, int pixels, float* u) {
+void dither_row(std::uint64_t row_key, int x0, int pixels, float* u) {
   for (int x = 0; x < pixels; ++x) {
-    const std::uint64_t key = hash_pixel(row_key, std::uint64_t(x));
+    const std::uint64_t key = hash_pixel(row_key, std::uint64_t(x0 + x));
     for (int c = 0; c < 3; ++c) u[3 * x + c] = hash_uniform3(key, c);
   }
 }
@@ -55,37 +56,43 @@ void quantise_row(const float* g, const float* u, float max_code, float* q, int 
   }
 }
 
+constexpr int kChunk = 256;  // pixels a step: each step's values stay on the stack
+
 template <typename T>
-void encode_rows(const cv::Mat& linear, std::int64_t frame, const EncodingParams& p, float max_code, cv::Mat& code) {
+void encode_row(const float* linear, int cols, int y, std::int64_t frame, const EncodingParams& p, float max_code,
+                T* out) {
   const PowTable& gamma = shared_pow_table(p.gamma);  // 1e-7 relative: below 1e-2 of a 16-bit code
-  const int n = 3 * linear.cols;
-  cv::parallel_for_(cv::Range(0, linear.rows), [&](const cv::Range& rows) {
-    const size_t values = static_cast<size_t>(n);
-    std::vector<float> j(values), g(values), u(p.dither ? values : 0), q(values);
-    for (int y = rows.start; y < rows.end; ++y) {
-      clamp_row(linear.ptr<float>(y), j.data(), n);
-      gamma.batch(j.data(), g.data(), n);
-      if (p.dither)
-        dither_row(hash_row(p.seed, std::uint64_t(RandomStream::kDither), std::uint64_t(frame), std::uint64_t(y)),
-                   linear.cols, u.data());
-      quantise_row(g.data(), p.dither ? u.data() : nullptr, max_code, q.data(), n);
-      T* out = code.ptr<T>(y);
-      for (int i = 0; i < n; ++i) out[i] = T(q[i]);
-    }
-  });
+  const std::uint64_t row_key =
+      p.dither ? hash_row(p.seed, std::uint64_t(RandomStream::kDither), std::uint64_t(frame), std::uint64_t(y)) : 0;
+  float j[3 * kChunk], g[3 * kChunk], u[3 * kChunk], q[3 * kChunk];
+  for (int x0 = 0; x0 < cols; x0 += kChunk) {
+    const int pixels = std::min(kChunk, cols - x0), n = 3 * pixels;
+    clamp_row(linear + 3 * x0, j, n);
+    gamma.batch(j, g, n);
+    if (p.dither) dither_row(row_key, x0, pixels, u);
+    quantise_row(g, p.dither ? u : nullptr, max_code, q, n);
+    for (int i = 0; i < n; ++i) out[3 * x0 + i] = T(q[i]);
+  }
 }
 
 }  // namespace
 
+void encode_display_row(const float* linear, int cols, int y, std::int64_t frame_index, const EncodingParams& p,
+                        int bits, void* code_row) {
+  CV_Assert(bits == 8 || bits == 16);
+  if (bits == 8)
+    encode_row(linear, cols, y, frame_index, p, 255.0f, static_cast<std::uint8_t*>(code_row));
+  else
+    encode_row(linear, cols, y, frame_index, p, 65535.0f, static_cast<std::uint16_t*>(code_row));
+}
+
 void encode_display(const cv::Mat& linear, int bits, std::int64_t frame_index, const EncodingParams& p, cv::Mat& code) {
   CV_Assert(linear.type() == CV_32FC3 && (bits == 8 || bits == 16));
-  if (bits == 8) {
-    code.create(linear.size(), CV_8UC3);
-    encode_rows<std::uint8_t>(linear, frame_index, p, 255.0f, code);
-  } else {
-    code.create(linear.size(), CV_16UC3);
-    encode_rows<std::uint16_t>(linear, frame_index, p, 65535.0f, code);
-  }
+  code.create(linear.size(), bits == 8 ? CV_8UC3 : CV_16UC3);
+  cv::parallel_for_(cv::Range(0, linear.rows), [&](const cv::Range& rows) {
+    for (int y = rows.start; y < rows.end; ++y)
+      encode_display_row(linear.ptr<float>(y), linear.cols, y, frame_index, p, bits, code.ptr(y));
+  });
 }
 
 }  // namespace eyestream::retina

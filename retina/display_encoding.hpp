@@ -20,4 +20,11 @@ struct EncodingParams {
 // encodes as 0. Threads over rows; bytes do not depend on the thread count.
 void encode_display(const cv::Mat& linear, int bits, std::int64_t frame_index, const EncodingParams& p, cv::Mat& code);
 
+// Row y of that encoding, bit for bit: `cols` pixels of display-linear J
+// (3 floats each) into `code_row` (3 uint8 or uint16 each, by `bits`).
+// For a pass that makes J row by row and encodes each while it is in the
+// cache. Thread-safe; allocates nothing.
+void encode_display_row(const float* linear, int cols, int y, std::int64_t frame_index, const EncodingParams& p,
+                        int bits, void* code_row);
+
 }  // namespace eyestream::retina
