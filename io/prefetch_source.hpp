@@ -4,6 +4,8 @@
 // by next() at that frame, as the wrapped source would throw it.
 #pragma once
 
+#include <cstdint>
+
 #include <exception>
 #include <memory>
 #include <thread>

@@ -7,7 +7,7 @@
 
 #include "glare/uniform_field.hpp"
 #include "glare/veiling_luminance.hpp"
-#include "pipeline/eye/grey_map.hpp"
+#include "pipeline/eye/pixel_checks.hpp"
 #include "pipeline/eye/surround_row.hpp"
 #include "retina/enlarged_rows.hpp"
 #include "retina/halve_frame.hpp"
@@ -135,7 +135,9 @@ GlareStage::GlareStage(const Plan& plan)
   cv::split(in_frame_share(source, grey), shares);
   for (const cv::Mat& share : shares) in_frame_.push_back(share);
   // The halo's share is coloured where its rings reach the frame's edge,
-  // else the same in every channel: then one channel holds it.
+  // else the same in every channel: then one channel holds it (the core,
+  // inner and outer shares are grey by construction: one channel each,
+  // above).
   glare::PsfWeights halo;
   halo.halo = 1.0;
   in_frame_.push_back(one_channel_if_grey(in_frame_share(source, glare::same_in_every_channel(halo))));

@@ -13,4 +13,12 @@ std::int64_t count_nonfinite(const cv::Mat& rgb);
 // channel set to black.
 cv::Mat finite_copy(const cv::Mat& rgb);
 
+// `map` (CV_32FC3, finite) as one channel (CV_32F, channel 0's values bit
+// for bit) when every pixel's three values compare equal (+0 and -0
+// alike), else `map` itself. Stops at the first pixel whose values differ;
+// a grey map costs one channel's copy, not three. (The glare's in-frame
+// shares: a grey one takes a third of the memory and of the reads every
+// frame.)
+cv::Mat one_channel_if_grey(const cv::Mat& map);
+
 }  // namespace eyestream::pipeline

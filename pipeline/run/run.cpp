@@ -218,9 +218,10 @@ RunSummary run(const Settings& s) {
   // the one being decoded or queued; a video knows it only by decoding, and
   // three are held, the next one taken early for its time. The decoder
   // waits for room before it decodes another.
-  // With --end-frame it decodes nothing the run will not take: a file
-  // sequence's last frame is the one before it, a video's the one at it
-  // (decoded for its time).
+  // With --end-frame it decodes nothing the run will not take: the last
+  // frame is the one before it for a source that knows its frames' times
+  // (a file sequence), the one at it for a source that learns them only by
+  // decoding (a video or raw stream: that frame is decoded for its time).
   const bool times_known = source->knows_times();  // a property of the source, for the whole sequence
   if (overlap_io(s))
     source = std::make_unique<io::PrefetchSource>(std::move(source), 1,

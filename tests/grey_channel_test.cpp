@@ -1,7 +1,7 @@
-// pipeline/eye/grey_map.hpp: a map whose three channels agree everywhere
+// pipeline/eye/pixel_checks.hpp's one_channel_if_grey: a map whose three channels agree everywhere
 // comes back as one channel holding channel 0's bytes; one pixel that
 // differs anywhere (first, middle, last) keeps all three, the map itself.
-#include "pipeline/eye/grey_map.hpp"
+#include "pipeline/eye/pixel_checks.hpp"
 
 #include <gtest/gtest.h>
 
