@@ -82,12 +82,19 @@ std::optional<cv::Rect> read_region(cv::Mat& sites, cv::Size grid) {
   return region;
 }
 
+// The grid's half-extent in frame pixels: the retina's reach, rounded up.
+cv::Size grid_reach(const FrameProjection& p) {
+  const cv::Size2d reach = p.retina_reach();
+  return {int(std::ceil(reach.width)), int(std::ceil(reach.height))};
+}
+
 }  // namespace
 
-RetinaStage::RetinaStage(const Plan& plan)
+RetinaStage::RetinaStage(const Plan& plan) : RetinaStage(plan, grid_reach(*plan.projection)) {}
+
+RetinaStage::RetinaStage(const Plan& plan, cv::Size reach)
     : plan_(plan),
-      grid_(int(std::ceil(plan.projection->retina_reach().width)), int(std::ceil(plan.projection->retina_reach().height)),
-            plan.retina.sites_per_pixel),
+      grid_(reach.width, reach.height, plan.retina.sites_per_pixel),
       state_(grid_.size(), plan.retina.receptors, plan.retina.double_precision),
       visibility_(grid_.foveal_falloff(plan.retina.fovea_sigma_px)) {
   const cv::Size frame(plan.width, plan.height);

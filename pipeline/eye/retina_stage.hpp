@@ -71,6 +71,8 @@ class RetinaStage {
   const retina::RetinalGrid& grid() const { return grid_; }
 
  private:
+  // With the grid's half-extent in frame pixels (the retina's reach, rounded up).
+  RetinaStage(const Plan& plan, cv::Size reach);
   // The cone stimulus averaged down to about the grid's resolution.
   // The frame at the grid's resolution (sites per pixel below 1), where the
   // stimulus is sampled and the afterimages are drawn.
