@@ -8,7 +8,7 @@
 #ifndef EYESTREAM_VECTOR_CLONES
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 12
 #define EYESTREAM_VECTOR_CLONES __attribute__((target_clones("arch=x86-64-v4", "avx2", "default")))
-#elif defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)  // (arch= in target_clones: GCC 12 on)
+#elif defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)  // (x86-64-v4 in target_clones: GCC 12 on)
 #define EYESTREAM_VECTOR_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
 #else
 #define EYESTREAM_VECTOR_CLONES

@@ -59,9 +59,8 @@ void quantise_row(const float* g, const float* u, float max_code, float* q, int 
 constexpr int kChunk = 256;  // pixels a step: each step's values stay on the stack
 
 template <typename T>
-void encode_row(const float* linear, int cols, int y, std::int64_t frame, const EncodingParams& p, float max_code,
-                T* out) {
-  const PowTable& gamma = shared_pow_table(p.gamma);  // 1e-7 relative: below 1e-2 of a 16-bit code
+void encode_row(const float* linear, int cols, int y, std::int64_t frame, const EncodingParams& p,
+                const PowTable& gamma, float max_code, T* out) {
   const std::uint64_t row_key =
       p.dither ? hash_row(p.seed, std::uint64_t(RandomStream::kDither), std::uint64_t(frame), std::uint64_t(y)) : 0;
   float j[3 * kChunk], g[3 * kChunk], u[3 * kChunk], q[3 * kChunk];
@@ -75,23 +74,29 @@ void encode_row(const float* linear, int cols, int y, std::int64_t frame, const 
   }
 }
 
+void encode_row_in_bits(const float* linear, int cols, int y, std::int64_t frame_index, const EncodingParams& p,
+                        const PowTable& gamma, int bits, void* code_row) {
+  if (bits == 8)
+    encode_row(linear, cols, y, frame_index, p, gamma, 255.0f, static_cast<std::uint8_t*>(code_row));
+  else
+    encode_row(linear, cols, y, frame_index, p, gamma, 65535.0f, static_cast<std::uint16_t*>(code_row));
+}
+
 }  // namespace
 
 void encode_display_row(const float* linear, int cols, int y, std::int64_t frame_index, const EncodingParams& p,
                         int bits, void* code_row) {
   CV_Assert(bits == 8 || bits == 16);
-  if (bits == 8)
-    encode_row(linear, cols, y, frame_index, p, 255.0f, static_cast<std::uint8_t*>(code_row));
-  else
-    encode_row(linear, cols, y, frame_index, p, 65535.0f, static_cast<std::uint16_t*>(code_row));
+  encode_row_in_bits(linear, cols, y, frame_index, p, shared_pow_table(p.gamma), bits, code_row);
 }
 
 void encode_display(const cv::Mat& linear, int bits, std::int64_t frame_index, const EncodingParams& p, cv::Mat& code) {
   CV_Assert(linear.type() == CV_32FC3 && (bits == 8 || bits == 16));
+  const PowTable& gamma = shared_pow_table(p.gamma);  // 1e-7 relative: below 1e-2 of a 16-bit code
   code.create(linear.size(), bits == 8 ? CV_8UC3 : CV_16UC3);
   cv::parallel_for_(cv::Range(0, linear.rows), [&](const cv::Range& rows) {
     for (int y = rows.start; y < rows.end; ++y)
-      encode_display_row(linear.ptr<float>(y), linear.cols, y, frame_index, p, bits, code.ptr(y));
+      encode_row_in_bits(linear.ptr<float>(y), linear.cols, y, frame_index, p, gamma, bits, code.ptr(y));
   });
 }
 

@@ -23,7 +23,8 @@ void encode_display(const cv::Mat& linear, int bits, std::int64_t frame_index, c
 // Row y of that encoding, bit for bit: `cols` pixels of display-linear J
 // (3 floats each) into `code_row` (3 uint8 or uint16 each, by `bits`).
 // For a pass that makes J row by row and encodes each while it is in the
-// cache. Thread-safe; allocates nothing.
+// cache. Thread-safe; allocates nothing once p.gamma's power table exists
+// (the first use of a gamma makes it, shared_pow_table).
 void encode_display_row(const float* linear, int cols, int y, std::int64_t frame_index, const EncodingParams& p,
                         int bits, void* code_row);
 

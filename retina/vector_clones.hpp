@@ -2,8 +2,8 @@
 // program starts (GCC's function multi-versioning). The AVX-512 version is
 // x86-64-v4 (AVX-512 F, BW, CD, DQ and VL over AVX2), so that a 64-bit
 // multiply, as in the dither's hashes, is one instruction instead of three
-// 32-bit multiplies with shifts and adds; GCC before 12, which takes no
-// arch= there, gets AVX-512 F alone. No version fuses a multiply and an
+// 32-bit multiplies with shifts and adds; GCC before 12, which does not
+// know the x86-64-vN levels in target_clones, gets AVX-512 F alone. No version fuses a multiply and an
 // add (the build passes -ffp-contract=off: AVX-512 brings FMA, which GCC
 // would otherwise use), so every version gives the same bytes; the wider
 // ones handle more values per instruction. Elsewhere the attribute is
@@ -14,7 +14,7 @@
 #ifndef EYESTREAM_VECTOR_CLONES
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 12
 #define EYESTREAM_VECTOR_CLONES __attribute__((target_clones("arch=x86-64-v4", "avx2", "default")))
-#elif defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)  // (arch= in target_clones: GCC 12 on)
+#elif defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)  // (x86-64-v4 in target_clones: GCC 12 on)
 #define EYESTREAM_VECTOR_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
 #else
 #define EYESTREAM_VECTOR_CLONES

@@ -86,13 +86,15 @@ TEST(DisplayEncoding, DitherIsAFunctionOfSeedFrameAndPositionOnly) {
   EXPECT_GT(cv::norm(a, d, cv::NORM_INF), 0.0);
 }
 
-// The encoding's vectorised rows (compiled for AVX2 where the machine has
-// it) give exactly the codes of the definition written out here value by
-// value: clamp (non-finite and -0 to 0), the gamma table (std::pow below
-// its least octave), the pixel's hash for the dither; on random values and
-// on the awkward ones, 8 and 16 bits, with and without dither.
+// The encoding's vectorised rows (compiled for AVX-512 and AVX2 where the
+// machine has them) give exactly the codes of the definition written out
+// here value by value: clamp (non-finite and -0 to 0), the gamma table
+// (std::pow below its least octave), the pixel's hash for the dither; on
+// random values and on the awkward ones, 8 and 16 bits, with and without
+// dither. Rows of 600 pixels: two whole steps of 256 and a part of one.
+// encode_display_row gives each row's codes alike.
 TEST(DisplayEncoding, TheVectorisedRowsGiveTheDefinitionsCodes) {
-  cv::Mat linear(23, 67, CV_32FC3);
+  cv::Mat linear(23, 600, CV_32FC3);
   cv::RNG rng(11);
   rng.fill(linear, cv::RNG::UNIFORM, -0.1, 1.1);
   const float awkward[] = {-0.0f, 0.0f, 1.0f, 1e-20f, 3e-13f, 1e-38f, 2.0f, -5.0f, NAN, INFINITY, -INFINITY, 0.5f};
@@ -121,6 +123,10 @@ TEST(DisplayEncoding, TheVectorisedRowsGiveTheDefinitionsCodes) {
           }
       }
       EXPECT_EQ(differ, 0) << bits << " bits, dither " << dither;
+      cv::Mat by_rows(code.size(), code.type());
+      for (int y = 0; y < linear.rows; ++y)
+        encode_display_row(linear.ptr<float>(y), linear.cols, y, 9, p, bits, by_rows.ptr(y));
+      EXPECT_EQ(cv::norm(by_rows, code, cv::NORM_INF), 0.0) << bits << " bits, dither " << dither;
     }
 }
 
