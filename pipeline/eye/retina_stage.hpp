@@ -73,9 +73,6 @@ class RetinaStage {
  private:
   // With the grid's half-extent in frame pixels (the retina's reach, rounded up).
   RetinaStage(const Plan& plan, cv::Size reach);
-  // The cone stimulus averaged down to about the grid's resolution.
-  // The frame at the grid's resolution (sites per pixel below 1), where the
-  // stimulus is sampled and the afterimages are drawn.
   // Whether no site of the grid departs from rest by more than
   // kRestTolerance (the afterimage maps of the whole grid).
   bool whole_grid_rests() const;
@@ -84,6 +81,9 @@ class RetinaStage {
   cv::Mat gain_, bleach_;  // drawn afterimage maps, between prepare_afterimages() and composite()
   std::optional<cv::Point2d> drawn_at_;  // or the grid's maps, to draw at this gaze (frame's own plane)
   bool draw_ = false;
+  // The frame averaged down to about the grid's resolution (sites per
+  // pixel below 1), where the cone stimulus is sampled and the
+  // afterimages are drawn.
   cv::Size reduced_frame_size(cv::Size frame) const;
   cv::Mat reduce_frame(const cv::Mat& frame) const;
   std::shared_ptr<const retina::AreaReduction> reduction_;  // the plan's frame to reduced_frame_size(), if smaller
