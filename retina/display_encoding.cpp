@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <vector>
 
 #include "retina/hash_random.hpp"
 #include "retina/pow_table.hpp"

@@ -219,8 +219,8 @@ double FrameProjection::solid_angle_deg2() const {
 }
 
 cv::Mat FrameProjection::solid_angle_weights() const {
-  cv::Mat w(frame_, CV_32F, cv::Scalar(1.0));
-  if (kind_ == Projection::equidistant) return w;
+  if (kind_ == Projection::equidistant) return cv::Mat(frame_, CV_32F, cv::Scalar(1.0));
+  cv::Mat w(frame_, CV_32F);  // every value written below
   // cos^3 of the angle off axis, (1 + X^2 + Y^2)^-1.5. A column's X and its
   // mirror's are exact negatives (halves and integers), and likewise for
   // rows, so each value is computed once for a quarter of the frame and
