@@ -12,13 +12,16 @@ namespace {
 
 constexpr double kHaloOuterDeg = 4.5;  // Spencer et al. 1995: the halo ring's outer edge
 
-// The near window w(r) for r in full-resolution pixels.
-double near_window(double r, double radius) {
-  const double inner = radius / 2.0;
-  if (r <= inner) return 1.0;
-  if (r >= radius) return 0.0;
-  return (radius - r) / (radius - inner);
-}
+// A window over r in full-resolution pixels: 1 within `from`, falling
+// linearly to 0 at `to`.
+struct Window {
+  double from, to;
+  double at(double r) const {
+    if (r <= from) return 1.0;
+    if (r >= to) return 0.0;
+    return (to - r) / (to - from);
+  }
+};
 
 // The middle level blurs its band: the block sums (a box, f^2 / 12 px^2
 // of variance along each axis) and the bilinear enlargement (a tent,
@@ -47,26 +50,26 @@ std::vector<cv::Mat*> components(ComponentKernels& k) {
 
 // Multiplies `kernel` (centred) by window(r * pixel_scale), or by
 // 1 - window when `complement`; r in the kernel's pixels.
-void apply_window(cv::Mat& kernel, double pixel_scale, double radius, bool complement) {
+void apply_window(cv::Mat& kernel, double pixel_scale, Window window, bool complement) {
   const double cx = kernel.cols / 2, cy = kernel.rows / 2;
   for (int y = 0; y < kernel.rows; ++y) {
     double* row = kernel.ptr<double>(y);
     for (int x = 0; x < kernel.cols; ++x) {
-      const double w = near_window(std::hypot(x - cx, y - cy) * pixel_scale, radius);
+      const double w = window.at(std::hypot(x - cx, y - cy) * pixel_scale);
       row[x] *= complement ? 1.0 - w : w;
     }
   }
 }
 
-// Multiplies `kernel` (centred) by window(r, outer) - window(r, inner),
-// r = the distance in full-resolution pixels (pixel_scale per kernel pixel).
-void apply_band(cv::Mat& kernel, double pixel_scale, double inner, double outer) {
+// Multiplies `kernel` (centred) by outer(r) - inner(r), r = the distance
+// in full-resolution pixels (pixel_scale per kernel pixel).
+void apply_band(cv::Mat& kernel, double pixel_scale, Window inner, Window outer) {
   const double cx = kernel.cols / 2, cy = kernel.rows / 2;
   for (int y = 0; y < kernel.rows; ++y) {
     double* row = kernel.ptr<double>(y);
     for (int x = 0; x < kernel.cols; ++x) {
       const double r = std::hypot(x - cx, y - cy) * pixel_scale;
-      row[x] *= near_window(r, outer) - near_window(r, inner);
+      row[x] *= outer.at(r) - inner.at(r);
     }
   }
 }
@@ -239,13 +242,19 @@ SplitConvolver::SplitConvolver(int width, int height, double ppd, int factor, co
       middle_up_(padded(width, height, 4 * factor_) / factor_, padded(width, height, 4 * factor_)) {
   const int f1 = factor_, f2 = 4 * factor_;
   const int padded_w = (width + f2 - 1) / f2 * f2, padded_h = (height + f2 - 1) / f2 * f2;
-  // Window radii in full-resolution pixels. The tail starts beyond the
-  // lenticular halo (rings up to 4.5 deg, coloured at a scale its blocks
-  // would blur) and where its blocks are small against the PSF's change.
-  const double r0 = radius_, r1 = std::max(16.0 * f2, 2.0 * kHaloOuterDeg * ppd);
+  // The windows in full-resolution pixels. The near one falls from R_0 / 2
+  // to R_0. The tail starts beyond the lenticular halo (rings up to 4.5
+  // deg, coloured at a scale its blocks would blur) and where its blocks
+  // are small against the PSF's change (8 of them); it takes over in a
+  // ramp a third of its start wide, and at least 8 of its blocks.
+  const double r0 = radius_;
+  const Window w0{r0 / 2.0, r0};
+  const double from1 = std::max(8.0 * f2, kHaloOuterDeg * ppd);
+  const Window w1{from1, from1 + std::max(from1 / 3.0, 8.0 * f2)};
+  const double r1 = w1.to;
   near_ = build_component_kernels(radius_ + 1, radius_ + 1, ppd, optics);
   for (cv::Mat* k : components(near_)) {
-    apply_window(*k, 1.0, r0, false);
+    apply_window(*k, 1.0, w0, false);
     if (!with_centre) k->at<double>(near_.centre()) = 0.0;
   }
   // Tiles need less memory (their spectra and buffers are a tile's size,
@@ -263,11 +272,11 @@ SplitConvolver::SplitConvolver(int width, int height, double ppd, int factor, co
   // Middle: K (w_1 - w_0), reaching R_1 / f1 of its pixels.
   const int reach = int(std::ceil(r1 / f1));
   ComponentKernels middle = build_component_kernels(reach + 1, reach + 1, ppd / f1, optics);
-  for (cv::Mat* k : components(middle)) apply_band(*k, f1, r0, r1);
+  for (cv::Mat* k : components(middle)) apply_band(*k, f1, w0, w1);
   for (cv::Mat* k : components(middle)) sharpen(*k, kMiddleSharpening);
   // Tail: K (1 - w_1), the whole frame's reach.
   ComponentKernels tail = build_component_kernels(padded_w / f2, padded_h / f2, ppd / f2, optics);
-  for (cv::Mat* k : components(tail)) apply_window(*k, f2, r1, true);
+  for (cv::Mat* k : components(tail)) apply_window(*k, f2, w1, true);
   coarse_.resize(2);
   coarse_[0].factor = f1;
   coarse_[0].size = {padded_w / f1, padded_h / f1};

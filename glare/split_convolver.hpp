@@ -1,17 +1,22 @@
 // The split glare engine: the PSF's sharp centre at full resolution, its
 // smoother parts at reduced resolutions (docs/model.md). Level l runs at a
 // reduction f_l (1, then `factor`, then 4 factor); with the windows
-// w_l(r) = 1 within R_l / 2 pixels of the source, falling linearly to 0 at
+// w_l(r) = 1 within S_l pixels of the source, falling linearly to 0 at
 // R_l, level l holds K (w_l - w_(l-1)), integrated over its f_l x f_l
 // pixel footprints, and the last level holds K (1 - w_(l-1)):
-//   near   (full resolution, R_0 = 8 factor pixels),
-//   middle (1/factor, out to R_1 = the larger of 64 factor pixels and 9 deg,
-//           padded by that reach),
+//   near   (full resolution, S_0 = R_0 / 2, R_0 = 8 factor pixels),
+//   middle (1/factor, out to R_1 = S_1 + the larger of S_1 / 3 and 32
+//           factor pixels, S_1 = the larger of 32 factor pixels and 4.5
+//           deg, padded by that reach),
 //   tail   (1/(4 factor), the whole frame's reach).
 // A level takes over where its blocks are small against the PSF's change
-// (R_0 = 8 f_middle; 16 f_tail, as 8 f_tail cost twice the stated error),
-// and the tail only beyond the lenticular halo (rings to 4.5 deg, whose
-// colour order its blocks would repaint: tests/split_engine_test.cpp).
+// (R_0 = 8 f_middle; S_1 >= 8 f_tail, as 4 f_tail cost twice the stated
+// error), and the tail only beyond the lenticular halo (rings to 4.5 deg,
+// whose colour order its blocks would repaint: tests/split_engine_test.cpp),
+// in a ramp at least 8 of its blocks wide. Until the fourteenth session
+// the tail's ramp ran from R_1 / 2 to R_1 = 9 deg at high resolutions: the
+// middle level's transforms were a fifth larger for the same bench
+// accuracy (docs/performance.md).
 // The windows are applied at pixel centres (near) and block centres, so the
 // levels together hold the undivided kernel's energy to within 0.05 %
 // (tests/split_engine_test.cpp); each coarse level is enlarged keeping its

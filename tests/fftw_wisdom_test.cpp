@@ -31,8 +31,8 @@ TEST(FftwWisdom, HoldsThePlansOfBalancedAt1080p) {
   fftw_complex* spectrum = fftw_alloc_complex(256 * 129);
   fftw_plan tile = fftw_plan_dft_r2c_2d(256, 256, real, spectrum, only);
   EXPECT_NE(tile, nullptr) << "the near tiles' forward transform";
-  // The middle level: columns of 864 in blocks of 16, one after the other.
-  int n = 864;
+  // The middle level: columns of 768 in blocks of 16, one after the other.
+  int n = 768;
   fftw_complex* block = fftw_alloc_complex(size_t(n) * 16);
   fftw_plan columns = fftw_plan_many_dft(1, &n, 16, block, nullptr, 1, n, block, nullptr, 1, n, FFTW_FORWARD, only);
   EXPECT_NE(columns, nullptr) << "the middle level's column transforms";
@@ -44,15 +44,15 @@ TEST(FftwWisdom, HoldsThePlansOfBalancedAt1080p) {
 }
 
 TEST(FftwWisdom, AnEngineOnTheShippedPlansMatchesTheDirectSum) {
-  // 1248 x 828 with a 13 px kernel: transforms of 1280 x 864, the middle
+  // 1140 x 756 with a 13 px kernel: transforms of 1152 x 768, the middle
   // level's at 1080p in `balanced`, planned from the wisdom.
   const ComponentKernels k = test::random_kernels(6, 3);
   PsfWeights w;
   w.core = 0.6, w.inner = 0.2, w.outer = 0.15, w.halo = 0.05;
-  cv::Mat in(828, 1248, CV_32FC3);
+  cv::Mat in(756, 1140, CV_32FC3);
   cv::RNG(5).fill(in, cv::RNG::UNIFORM, 0.0, 100.0);
   const FftConvolver engine(k, in.cols, in.rows);
-  ASSERT_EQ(engine.transform_size(), cv::Size(1280, 864));
+  ASSERT_EQ(engine.transform_size(), cv::Size(1152, 768));
   cv::Mat got, got64;
   engine.convolve(in, w, got);
   got.convertTo(got64, CV_64FC3);
