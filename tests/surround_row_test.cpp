@@ -53,5 +53,46 @@ TEST(SurroundRow, IsTheSurroundTimesThePsfShareOutsideTheFrame) {
           << "one grey map, x " << x << ", channel " << k;
 }
 
+TEST(SurroundRow, ThreeGreySharesInterleavedGiveWhatThreeSeparateMapsGive) {
+  // The glare stage's core, inner and outer shares come from one pass, one
+  // a channel: read interleaved, they give the bytes the three split maps
+  // gave, with a coloured halo after them (and against the formula).
+  const int cols = 601;
+  cv::RNG rng(11);
+  cv::Mat triple(1, cols, CV_32FC3), halo(1, cols, CV_32FC3), base(1, cols, CV_32FC3);
+  rng.fill(triple, cv::RNG::UNIFORM, 0.0, 0.8);
+  rng.fill(halo, cv::RNG::UNIFORM, 0.0, 0.3);
+  rng.fill(base, cv::RNG::UNIFORM, 0.0, 10.0);
+  std::vector<cv::Mat> split;
+  cv::split(triple, split);
+  const std::array<float, 4> weights = {0.6f, 0.25f, 0.4f, 0.8f};
+  const cv::Vec3f kept(0.05f, 0.1f, 0.02f);
+  const float s = 2.5f;
+  SurroundShares apart;
+  apart.count = 4;
+  apart.maps = {split[0].ptr<float>(), split[1].ptr<float>(), split[2].ptr<float>(), halo.ptr<float>()};
+  apart.strides = {1, 1, 1, 3};
+  SurroundShares together;
+  together.triple = triple.ptr<float>();
+  together.count = 1;
+  together.maps = {halo.ptr<float>(), nullptr, nullptr, nullptr};
+  together.strides = {3, 0, 0, 0};
+  cv::Mat want = base.clone(), got = base.clone();
+  add_surround_row(apart, weights, kept, s, want.ptr<float>(), cols);
+  add_surround_row(together, weights, kept, s, got.ptr<float>(), cols);
+  int clipped = 0;
+  for (int x = 0; x < cols; ++x)
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_EQ(got.at<cv::Vec3f>(x)[k], want.at<cv::Vec3f>(x)[k]) << "x " << x << ", channel " << k;
+      const cv::Vec3f t = triple.at<cv::Vec3f>(x);
+      const double inside = double(kept[k]) + weights[0] * double(t[0]) + weights[1] * double(t[1]) +
+                            weights[2] * double(t[2]) + weights[3] * double(halo.at<cv::Vec3f>(x)[k]);
+      clipped += inside > 1.0;
+      const double formula = double(base.at<cv::Vec3f>(x)[k]) + s * std::max(0.0, 1.0 - inside);
+      EXPECT_NEAR(got.at<cv::Vec3f>(x)[k], formula, 1e-5 * std::max(1.0, formula)) << "x " << x << ", channel " << k;
+    }
+  EXPECT_GT(clipped, 0) << "the test reaches the clip";
+}
+
 }  // namespace
 }  // namespace eyestream::pipeline

@@ -127,13 +127,14 @@ GlareStage::GlareStage(const Plan& plan)
   // uniform scene and surround come out uniform to the engine's rounding.
   // The core, inner and outer components are the same in every channel
   // (only the halo's rings are coloured), so one pass spreads all three,
-  // one per channel, each channel computed as it would be alone.
+  // one per channel, each channel computed as it would be alone; the
+  // surround reads them as that pass leaves them (SurroundShares::triple),
+  // not split into three maps (a serial copy of 25 MB at 1080p).
   const cv::Mat source = in_frame_source();  // made once for both passes
   glare::ChannelWeights grey;
   grey[0].core = grey[1].inner = grey[2].outer = 1.0;
-  std::vector<cv::Mat> shares;
-  cv::split(in_frame_share(source, grey), shares);
-  for (const cv::Mat& share : shares) in_frame_.push_back(share);
+  in_frame_.push_back(in_frame_share(source, grey));
+  triple_ = true;
   // The halo's share is coloured where its rings reach the frame's edge,
   // else the same in every channel: then one channel holds it (the core,
   // inner and outer shares are grey by construction: one channel each,
@@ -266,7 +267,7 @@ void GlareStage::add_surround(cv::Mat& light, const glare::PsfWeights& w, double
 
 FrameProjection::RowFinish GlareStage::surround_rows(const glare::PsfWeights& w, double surround) const {
   if (!(surround > 0.0) || in_frame_.empty()) return {};
-  CV_Assert(in_frame_.size() <= 4);
+  CV_Assert(in_frame_.size() <= (triple_ ? 2 : 4));
   // Each finished row is a frame row: the maps must be frame-sized.
   for (const cv::Mat& m : in_frame_)
     CV_Assert(m.depth() == CV_32F && m.isContinuous() && m.size() == plane_->frame_size());
@@ -276,9 +277,11 @@ FrameProjection::RowFinish GlareStage::surround_rows(const glare::PsfWeights& w,
   const cv::Vec3f kept = plane_->identity() ? cv::Vec3f(0, 0, 0) : kept_share(w);
   return [this, s, weights, kept](int y, float* row) {
     SurroundShares shares;
-    shares.count = in_frame_.size();
+    const size_t first = triple_ ? 1 : 0;
+    if (triple_) shares.triple = in_frame_[0].ptr<float>(y);
+    shares.count = in_frame_.size() - first;
     for (size_t c = 0; c < shares.count; ++c)
-      shares.maps[c] = in_frame_[c].ptr<float>(y), shares.strides[c] = in_frame_[c].channels();
+      shares.maps[c] = in_frame_[first + c].ptr<float>(y), shares.strides[c] = in_frame_[first + c].channels();
     add_surround_row(shares, weights, kept, s, row, in_frame_[0].cols);
   };
 }

@@ -125,8 +125,11 @@ class GlareStage {
   // Full mode: per component (core, inner, outer, halo), the share of the
   // PSF centred at each pixel that falls inside the frame (CV_32FC3, or
   // CV_32F when every channel holds the same); off the frame's own plane,
-  // without the kept share and at moved_light's size.
+  // without the kept share and at moved_light's size. With the PSF's
+  // kernels the first map holds the core's, inner's and outer's shares,
+  // one a channel, as their one pass makes them (`triple_`).
   std::vector<cv::Mat> in_frame_;
+  bool triple_ = false;
   // Per component (core, inner, outer, halo) and channel, the kernel's
   // centre pixel.
   cv::Vec3d centre_[4];

@@ -25,6 +25,18 @@ void add_grey(const float* m, float w, float* inside, int pixels) {
   }
 }
 
+// The three grey components interleaved in m, added in their order (each
+// channel's sum as add_grey would leave it after three calls).
+EYESTREAM_VECTOR_CLONES
+void add_grey_triple(const float* m, float w0, float w1, float w2, float* inside, int pixels) {
+  for (int x = 0; x < pixels; ++x) {
+    const float v0 = w0 * m[3 * x], v1 = w1 * m[3 * x + 1], v2 = w2 * m[3 * x + 2];
+    inside[3 * x] = inside[3 * x] + v0 + v1 + v2;
+    inside[3 * x + 1] = inside[3 * x + 1] + v0 + v1 + v2;
+    inside[3 * x + 2] = inside[3 * x + 2] + v0 + v1 + v2;
+  }
+}
+
 EYESTREAM_VECTOR_CLONES
 void add_outside(const float* inside, float s, float* out, int n) {
   for (int i = 0; i < n; ++i) out[i] += s * std::max(0.0f, 1.0f - inside[i]);
@@ -42,8 +54,10 @@ void add_surround_row(const SurroundShares& shares, const std::array<float, 4>& 
       inside[3 * x + 1] = kept[1];
       inside[3 * x + 2] = kept[2];
     }
+    const std::size_t first = shares.triple ? 3 : 0;
+    if (shares.triple) add_grey_triple(shares.triple + 3 * x0, weights[0], weights[1], weights[2], inside, pixels);
     for (std::size_t c = 0; c < shares.count; ++c) {
-      const float w = shares.count == 1 ? 1.0f : weights[c];
+      const float w = first + shares.count == 1 ? 1.0f : weights[first + c];
       if (shares.strides[c] == 3)
         add_coloured(shares.maps[c] + 3 * x0, w, inside, 3 * pixels);
       else
