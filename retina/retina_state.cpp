@@ -3,6 +3,7 @@
 #include "retina/afterimage_row.hpp"
 #include "retina/cone_step_row.hpp"
 #include "retina/diffusion.hpp"
+#include "retina/parallel_fill.hpp"
 #include "retina/pow_table.hpp"
 
 #include <algorithm>
@@ -187,8 +188,8 @@ bool is_double(const cv::Mat& m) { return m.depth() == CV_64F; }
 RetinaState::RetinaState(cv::Size grid, const PhotoreceptorParams& params, bool double_precision)
     : params_(params), c_max_(params.calcium_influx_per_s / params.calcium_efflux_per_s) {
   const int type = double_precision ? CV_64FC3 : CV_32FC3;
-  bleached_ = cv::Mat::zeros(grid, type);
-  deficit_ = cv::Mat::zeros(grid, type);
+  bleached_ = filled_in_parallel(grid, type, cv::Scalar::all(0.0));
+  deficit_ = filled_in_parallel(grid, type, cv::Scalar::all(0.0));
 }
 
 void RetinaState::rest(const cv::Mat& lms, const ToneCurve& curve) {

@@ -1,5 +1,7 @@
 #include "retina/retinal_grid.hpp"
 
+#include "retina/parallel_fill.hpp"
+
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
@@ -56,13 +58,15 @@ cv::Mat RetinalGrid::draw_at(const cv::Mat& map, const cv::Mat& sites, const cv:
 }
 
 cv::Mat RetinalGrid::foveal_falloff(double sigma_px) const {
-  cv::Mat w(size_, CV_32F, cv::Scalar(1.0));
-  if (!(sigma_px > 0)) return w;
-  for (int v = 0; v < size_.height; ++v)
-    for (int u = 0; u < size_.width; ++u) {
-      const double e = std::hypot(u - centre_x_, v - centre_y_) / scale_;
-      w.at<float>(v, u) = float(std::exp(-e * e / (2.0 * sigma_px * sigma_px)));
-    }
+  if (!(sigma_px > 0)) return filled_in_parallel(size_, CV_32F, cv::Scalar(1.0));
+  cv::Mat w(size_, CV_32F);  // every value written below, rows in parallel
+  cv::parallel_for_(cv::Range(0, size_.height), [&](const cv::Range& rows) {
+    for (int v = rows.start; v < rows.end; ++v)
+      for (int u = 0; u < size_.width; ++u) {
+        const double e = std::hypot(u - centre_x_, v - centre_y_) / scale_;
+        w.at<float>(v, u) = float(std::exp(-e * e / (2.0 * sigma_px * sigma_px)));
+      }
+  });
   return w;
 }
 

@@ -9,6 +9,7 @@
 #include "io/error.hpp"
 #include "pipeline/geometry/bilinear_splat.hpp"
 #include "pipeline/geometry/remap_maps.hpp"
+#include "retina/parallel_fill.hpp"
 
 namespace eyestream::pipeline {
 
@@ -104,7 +105,7 @@ void FrameProjection::make_carriage(Carriage& m) const {
   // The fixed splat and its normalisation (the sum of b over the frame
   // pixels landing on each plane pixel: the same every frame).
   m.flux_splat = std::make_shared<const FixedSplat>(m.positions, plane_);
-  const cv::Mat weight = bilinear_splat(cv::Mat(frame_, CV_32FC1, cv::Scalar(1.0)), m.positions, SplatAffine{1, 1, -0.5}, plane_,
+  const cv::Mat weight = bilinear_splat(retina::filled_in_parallel(frame_, CV_32FC1, cv::Scalar(1.0)), m.positions, SplatAffine{1, 1, -0.5}, plane_,
                                    cv::Scalar(0.0), cv::Mat());  // 1 where covered, 0 beyond
   // The sums made in place of the normalisation, each read before it is
   // replaced (no plane-sized image beside it).
@@ -219,7 +220,7 @@ double FrameProjection::solid_angle_deg2() const {
 }
 
 cv::Mat FrameProjection::solid_angle_weights() const {
-  if (kind_ == Projection::equidistant) return cv::Mat(frame_, CV_32F, cv::Scalar(1.0));
+  if (kind_ == Projection::equidistant) return retina::filled_in_parallel(frame_, CV_32F, cv::Scalar(1.0));
   cv::Mat w(frame_, CV_32F);  // every value written below
   // cos^3 of the angle off axis, (1 + X^2 + Y^2)^-1.5. A column's X and its
   // mirror's are exact negatives (halves and integers), and likewise for
