@@ -51,9 +51,9 @@ constexpr int kColumnBlock = 16;  // columns transformed together (fixed: result
 // The most memory the three channels' spectra may take to be held at once.
 // At 1080p `fast`'s near plane (14 MB) is held so, and its glare took 13.7
 // ms a frame in the glare bench against 14.55 one channel at a time
-// (medians of four, alternating); `balanced`'s middle level (27 MB) took
-// 51.1 against 51.45 and 11-19 MiB more in the bench, so it stays one
-// channel at a time. At 720p that level (12 MB) is held at once: 34.2
+// (medians of four, alternating); `balanced`'s middle level (then 27 MB,
+// 22 MB since its transforms are 1200 x 768) took 51.1 against 51.45 and
+// 11-19 MiB more in the bench, so it stays one channel at a time. At 720p that level (12 MB) is held at once: 34.2
 // against 33.9 ms, the same within the machine's noise.
 constexpr size_t kChannelsTogetherBytes = size_t(16) << 20;
 
@@ -100,7 +100,8 @@ int fft_size(int minimum) {
   // From 64 up, a multiple of 16 as well: FFTW's estimated plans run such
   // sizes at about two thirds of the time per point of sizes with more
   // factors of 5 or 7 (docs/performance.md: 1250 x 840 became 1280 x 864
-  // for `balanced`'s middle level at 1080p).
+  // for `balanced`'s middle level at 1080p, 2026-12-05; 1156 x 756 becomes
+  // 1200 x 768 since the fourteenth session's narrower tail ramp).
   const int unit = minimum >= 64 ? 16 : 1;
   for (int n = std::max(minimum, 1);; ++n) {
     if (n % unit != 0) continue;
@@ -147,7 +148,7 @@ class RowColumnEngine final : public FftConvolver::Engine {
     // the block's spectrum.
     // Each value is written once, as its kernel's transform is kept (the
     // padding columns of the last block as 0): not filled first, which
-    // cost a pass over them all (27 MB in `balanced` at 1080p).
+    // cost a pass over them all (22 MB in `balanced` at 1080p).
     for (std::unique_ptr<T[]>& s : spectra_) {
       s.reset(new T[size_t(ny) * stride_]);
       prefer_huge_pages(s.get(), sizeof(T) * size_t(ny) * stride_);

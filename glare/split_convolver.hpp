@@ -5,17 +5,18 @@
 // R_l, level l holds K (w_l - w_(l-1)), integrated over its f_l x f_l
 // pixel footprints, and the last level holds K (1 - w_(l-1)):
 //   near   (full resolution, S_0 = R_0 / 2, R_0 = 8 factor pixels),
-//   middle (1/factor, out to R_1 = S_1 + the larger of S_1 / 3 and 32
+//   middle (1/factor, out to R_1 = S_1 + the larger of S_1 / 2 and 32
 //           factor pixels, S_1 = the larger of 32 factor pixels and 4.5
 //           deg, padded by that reach),
 //   tail   (1/(4 factor), the whole frame's reach).
 // A level takes over where its blocks are small against the PSF's change
-// (R_0 = 8 f_middle; S_1 >= 8 f_tail, as 4 f_tail cost twice the stated
-// error), and the tail only beyond the lenticular halo (rings to 4.5 deg,
-// whose colour order its blocks would repaint: tests/split_engine_test.cpp),
-// in a ramp at least 8 of its blocks wide. Until the fourteenth session
-// the tail's ramp ran from R_1 / 2 to R_1 = 9 deg at high resolutions: the
-// middle level's transforms were a fifth larger for the same bench
+// (R_0 = 8 f_middle; S_1 >= 8 f_tail, as a hand-over from 4 to 8 f_tail
+// cost twice the stated error), and the tail only beyond the lenticular
+// halo (rings to 4.5 deg, whose colour order its blocks would repaint:
+// tests/split_engine_test.cpp), in a ramp at least 8 of its blocks wide.
+// Until the fourteenth session the tail's ramp ran from R_1 / 2 to R_1,
+// 9 deg where the halo set S_1: `balanced`'s middle level transforms at
+// 1080p were 1280 x 864 instead of 1200 x 768, for the same bench
 // accuracy (docs/performance.md).
 // The windows are applied at pixel centres (near) and block centres, so the
 // levels together hold the undivided kernel's energy to within 0.05 %

@@ -59,8 +59,10 @@ TEST(FftConvolver, TransformSizesAreSmoothMultiplesOfSixteen) {
     while (!smooth(want) || (minimum >= 64 && want % 16 != 0)) ++want;
     ASSERT_EQ(fft_size(minimum), want) << minimum;
   }
-  EXPECT_EQ(fft_size(1248), 1280);  // `balanced`'s middle level at 1080p, across (was 1250)
-  EXPECT_EQ(fft_size(828), 864);    // and down (was 840)
+  EXPECT_EQ(fft_size(1248), 1280);  // `balanced`'s middle level at 1080p until the
+  EXPECT_EQ(fft_size(828), 864);    // fourteenth session, across and down (was 1250 x 840)
+  EXPECT_EQ(fft_size(1156), 1200);  // since then (the tail's narrower ramp)
+  EXPECT_EQ(fft_size(756), 768);
   EXPECT_EQ(fft_size(3839), 3840);  // `reference`'s at 1080p, unchanged
   EXPECT_EQ(fft_size(2159), 2160);
 }

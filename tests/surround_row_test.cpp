@@ -92,6 +92,17 @@ TEST(SurroundRow, ThreeGreySharesInterleavedGiveWhatThreeSeparateMapsGive) {
       EXPECT_NEAR(got.at<cv::Vec3f>(x)[k], formula, 1e-5 * std::max(1.0, formula)) << "x " << x << ", channel " << k;
     }
   EXPECT_GT(clipped, 0) << "the test reaches the clip";
+  // The program's usual case: a grey halo after the triple, onto rows of
+  // 0 (no rounding of the sum hides a difference).
+  cv::Mat grey_halo(1, cols, CV_32F);
+  rng.fill(grey_halo, cv::RNG::UNIFORM, 0.0, 0.3);
+  apart.maps[3] = grey_halo.ptr<float>(), apart.strides[3] = 1;
+  together.maps[0] = grey_halo.ptr<float>(), together.strides[0] = 1;
+  cv::Mat want0 = cv::Mat::zeros(1, cols, CV_32FC3), got0 = want0.clone();
+  add_surround_row(apart, weights, kept, s, want0.ptr<float>(), cols);
+  add_surround_row(together, weights, kept, s, got0.ptr<float>(), cols);
+  EXPECT_EQ(cv::norm(got0, want0, cv::NORM_INF), 0.0) << "a grey halo after the triple";
+  EXPECT_GT(cv::norm(got0, cv::NORM_INF), 0.0);
 }
 
 }  // namespace
