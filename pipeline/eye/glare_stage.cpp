@@ -146,7 +146,9 @@ GlareStage::GlareStage(const Plan& plan)
 }
 
 cv::Mat GlareStage::in_frame_source() const {
-  const auto frame_ones = [&] { return retina::filled_in_parallel({plan_.width, plan_.height}, CV_32FC3, cv::Scalar::all(1.0)); };
+  const auto frame_ones = [&] {
+    return retina::filled_in_parallel({plan_.width, plan_.height}, CV_32FC3, cv::Scalar::all(1.0));
+  };
   if (plane_->identity()) return frame_ones();
   // The glare frame's ones are ones exactly when it is the frame or an
   // even-sized frame halved ((0 + (1 + 1 + 1 + 1)) x 0.25,

@@ -105,8 +105,9 @@ void FrameProjection::make_carriage(Carriage& m) const {
   // The fixed splat and its normalisation (the sum of b over the frame
   // pixels landing on each plane pixel: the same every frame).
   m.flux_splat = std::make_shared<const FixedSplat>(m.positions, plane_);
-  const cv::Mat weight = bilinear_splat(retina::filled_in_parallel(frame_, CV_32FC1, cv::Scalar(1.0)), m.positions, SplatAffine{1, 1, -0.5}, plane_,
-                                   cv::Scalar(0.0), cv::Mat());  // 1 where covered, 0 beyond
+  const cv::Mat weight = bilinear_splat(retina::filled_in_parallel(frame_, CV_32FC1, cv::Scalar(1.0)), m.positions,
+                                        SplatAffine{1, 1, -0.5}, plane_, cv::Scalar(0.0),
+                                        cv::Mat());  // 1 where covered, 0 beyond
   // The sums made in place of the normalisation, each read before it is
   // replaced (no plane-sized image beside it).
   m.flux_splat->weight_sums(m.flux_norm);
