@@ -47,6 +47,10 @@ void add_outside(const float* inside, float s, float* out, int n) {
 void add_surround_row(const SurroundShares& shares, const std::array<float, 4>& weights, cv::Vec3f kept, float s,
                       float* row, int cols) {
   float inside[3 * kChunk];
+  // The maps' weights follow the triple's three; one component alone takes 1.
+  const std::size_t first = shares.triple ? 3 : 0;
+  std::array<float, 4> map_weight{};
+  for (std::size_t c = 0; c < shares.count; ++c) map_weight[c] = first + shares.count == 1 ? 1.0f : weights[first + c];
   for (int x0 = 0; x0 < cols; x0 += kChunk) {
     const int pixels = std::min(kChunk, cols - x0);
     for (int x = 0; x < pixels; ++x) {
@@ -54,10 +58,9 @@ void add_surround_row(const SurroundShares& shares, const std::array<float, 4>& 
       inside[3 * x + 1] = kept[1];
       inside[3 * x + 2] = kept[2];
     }
-    const std::size_t first = shares.triple ? 3 : 0;
     if (shares.triple) add_grey_triple(shares.triple + 3 * x0, weights[0], weights[1], weights[2], inside, pixels);
     for (std::size_t c = 0; c < shares.count; ++c) {
-      const float w = first + shares.count == 1 ? 1.0f : weights[first + c];
+      const float w = map_weight[c];
       if (shares.strides[c] == 3)
         add_coloured(shares.maps[c] + 3 * x0, w, inside, 3 * pixels);
       else
