@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "retina/pixel_vector.hpp"
+#include "retina/vector_clones.hpp"
 
 namespace eyestream::pipeline {
 
@@ -21,24 +22,71 @@ inline int row_above(float y) { return int(y + 0.5f) - 1; }
 // one multiply and one add.
 using Rgbx = retina::PixelVector;
 
-// A bilinear splat's two neighbouring sums in one accumulator row: the
-// left one written at once, the right one held until the next pixel.
-struct Pending {
-  Rgbx* at = nullptr;
-  Rgbx value = {0, 0, 0, 0};
-  Rgbx take(Rgbx* p) const { return p == at ? value : *p; }
-  void add(Rgbx* left, const Rgbx& to_left, const Rgbx& to_right) {
-    const Rgbx l = take(left), r = take(left + 1);
-    if (at && at != left && at != left + 1) *at = value;
-    *left = l + to_left;
-    at = left + 1;
-    value = r + to_right;
+// One run's pixels splatted into the accumulators `sums` (row stride
+// `stride`, the block's first row r0). The four sums a pixel adds to are
+// held in registers while the next pixels land on the same pair of rows,
+// in the same column or one column on (most do): the left column's sums
+// are stored as the footprint moves one column right, and the new right
+// column's read. Any other step stores the four and starts afresh. Each
+// sum still takes its terms in frame order, starting from what the
+// accumulator held, with no store and reload between them.
+template <bool kOnes>
+EYESTREAM_VECTOR_CLONES void splat_run(const cv::Vec2f* pos, const float* in, int x, int end, Rgbx* sums, int stride, int r0) {
+  const auto shares = [&](int at, int& i0, int& j0, Rgbx& tl, Rgbx& tr, Rgbx& bl, Rgbx& br) {
+    const float tx = pos[at][0] + 0.5f, ty = pos[at][1] + 0.5f;
+    i0 = int(tx) - 1;
+    j0 = int(ty) - 1;
+    const float fx = tx - float(i0 + 1), fy = ty - float(j0 + 1);
+    Rgbx value = {1.0f, 1.0f, 1.0f, 0.0f};
+    if constexpr (!kOnes) value = Rgbx{in[3 * size_t(at)], in[3 * size_t(at) + 1], in[3 * size_t(at) + 2], 0.0f};
+    const Rgbx top_row = value * (1.0f - fy), bottom_row = value * fy;
+    tl = top_row * (1.0f - fx);
+    tr = top_row * fx;
+    bl = bottom_row * (1.0f - fx);
+    br = bottom_row * fx;
+  };
+  while (x < end) {
+    int i0, j0;
+    Rgbx tl, tr, bl, br;
+    shares(x, i0, j0, tl, tr, bl, br);
+    Rgbx* s = &sums[size_t(j0 - r0 + 1) * size_t(stride) + size_t(i0 + 1)];
+    Rgbx t0 = s[0] + tl, t1 = s[1] + tr, b0 = s[stride] + bl, b1 = s[stride + 1] + br;
+    const int row = j0;
+    int column = i0;
+    for (++x; x < end; ++x) {
+      shares(x, i0, j0, tl, tr, bl, br);
+      if (j0 != row || (i0 != column && i0 != column + 1)) break;
+      if (i0 == column) {
+        t0 += tl;
+        t1 += tr;
+        b0 += bl;
+        b1 += br;
+        continue;
+      }
+      s[0] = t0;
+      s[stride] = b0;
+      ++s;
+      column = i0;
+      t0 = t1 + tl;
+      b0 = b1 + bl;
+      t1 = s[1] + tr;
+      b1 = s[stride + 1] + br;
+    }
+    s[0] = t0;
+    s[1] = t1;
+    s[stride] = b0;
+    s[stride + 1] = b1;
   }
-  void flush() {
-    if (at) *at = value;
-    at = nullptr;
-  }
-};
+}
+
+// A plane row out of its sums: each pixel's three values times its
+// factor. Four floats are stored at once, the fourth being the next
+// pixel's first, which that pixel then writes; the last pixel three.
+EYESTREAM_VECTOR_CLONES void scaled_row(const Rgbx* sums, const float* factor, float* out, int cols) {
+  int i = 0;
+  for (; i + 1 < cols; ++i) retina::store_four(out + 3 * size_t(i), sums[i] * factor[i]);
+  if (i < cols) retina::store_three(out + 3 * size_t(i), sums[i] * factor[i]);
+}
 
 }  // namespace
 
@@ -126,30 +174,8 @@ void FixedSplat::splat(const cv::Mat* frame, const cv::Mat* factor, cv::Mat& out
         std::fill(sums, sums + size_t(rows + 2) * size_t(stride), Rgbx{0, 0, 0, 0});  // rows r0 - 1 .. r0 + rows
         for (size_t i = first_run_[size_t(b)]; i < first_run_[size_t(b) + 1]; ++i) {
           const Run& run = runs_[i];
-          const cv::Vec3f* in = kOnes ? nullptr : frame->ptr<cv::Vec3f>(run.y);
-          const cv::Vec2f* pos = positions_.ptr<cv::Vec2f>(run.y);
-          // The right column's sum stays in a register for the next pixel,
-          // which usually lands one column on: each sum still takes its
-          // terms in frame order, with no store and reload between them.
-          Pending top, bottom;
-          int held_row = -2;
-          for (int x = run.x0; x < run.x1; ++x) {
-            const float tx = pos[x][0] + 0.5f, ty = pos[x][1] + 0.5f;
-            const int i0 = int(tx) - 1, j0 = int(ty) - 1;
-            if (j0 != held_row) {  // a new pair of rows: one's held sum may be the other's
-              top.flush();
-              bottom.flush();
-              held_row = j0;
-            }
-            const float fx = tx - float(i0 + 1), fy = ty - float(j0 + 1);
-            Rgbx* s = &sums[size_t(j0 - r0 + 1) * size_t(stride) + size_t(i0 + 1)];
-            const Rgbx value = kOnes ? Rgbx{1.0f, 1.0f, 1.0f, 0.0f} : Rgbx{in[x][0], in[x][1], in[x][2], 0.0f};
-            const Rgbx top_row = value * (1.0f - fy), bottom_row = value * fy;
-            top.add(s, top_row * (1.0f - fx), top_row * fx);
-            bottom.add(s + stride, bottom_row * (1.0f - fx), bottom_row * fx);
-          }
-          top.flush();
-          bottom.flush();
+          const float* in = kOnes ? nullptr : frame->ptr<float>(run.y);
+          splat_run<kOnes>(positions_.ptr<cv::Vec2f>(run.y), in, run.x0, run.x1, sums, stride, r0);
         }
         for (int j = 0; j < rows; ++j) {
           const Rgbx* s = &sums[size_t(j + 1) * size_t(stride) + 1];
@@ -158,12 +184,7 @@ void FixedSplat::splat(const cv::Mat* frame, const cv::Mat* factor, cv::Mat& out
             for (int i = 0; i < cols; ++i) o[i] = s[i][0];
             continue;
           }
-          cv::Vec3f* o = out.ptr<cv::Vec3f>(r0 + j);
-          const float* f = factor->ptr<float>(r0 + j);
-          for (int i = 0; i < cols; ++i) {
-            const Rgbx v = s[i] * f[i];
-            o[i] = cv::Vec3f(v[0], v[1], v[2]);
-          }
+          scaled_row(s, factor->ptr<float>(r0 + j), out.ptr<float>(r0 + j), cols);
         }
       }
   });
