@@ -31,7 +31,8 @@ using Rgbx = retina::PixelVector;
 // sum still takes its terms in frame order, starting from what the
 // accumulator held, with no store and reload between them.
 template <bool kOnes>
-EYESTREAM_VECTOR_CLONES void splat_run(const cv::Vec2f* pos, const float* in, int x, int end, Rgbx* sums, int stride, int r0) {
+EYESTREAM_VECTOR_CLONES void splat_run(const cv::Vec2f* pos, const float* in, int x, int end, Rgbx* sums, int stride,
+                                       int r0) {
   const auto shares = [&](int at, int& i0, int& j0, Rgbx& tl, Rgbx& tr, Rgbx& bl, Rgbx& br) {
     const float tx = pos[at][0] + 0.5f, ty = pos[at][1] + 0.5f;
     i0 = int(tx) - 1;
