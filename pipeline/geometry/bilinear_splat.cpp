@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "retina/pixel_vector.hpp"
+#include "retina/vector_clones.hpp"
 
 namespace eyestream::pipeline {
 
@@ -49,20 +50,15 @@ inline void add_share(cv::Vec<T, N>& sum, const cv::Vec<T, N>& value, T share) {
   sum += value * share;
 }
 
-// The same for three float channels and the weight as one vector
-// (retina/pixel_vector.hpp): the same products and sums, one multiply and
-// one add instead of four of each.
-inline void add_share(cv::Vec4f& sum, const cv::Vec4f& value, float share) {
-  retina::PixelVector s, v;
-  std::memcpy(&s, sum.val, sizeof s);
-  std::memcpy(&v, value.val, sizeof v);
-  s = s + v * share;
-  std::memcpy(sum.val, &s, sizeof s);
-}
+// The accumulators of a block: its target rows [r0, r0 + rows) and one
+// border row each way, each of its columns and one border column each
+// way (`stride` = cols + 2), so that every footprint meeting the block
+// has its four cells (those of the borders are left out).
+inline size_t cell(int j, int i, int stride) { return size_t(j + 1) * size_t(stride) + size_t(i + 1); }
 
-// One image row's bilinear splat into a block's sums (target rows [r0,
-// r0 + rows), each sum the pixel's channels and its weight): every share
-// value x ((1 - fx or fx) x (1 - fy or fy)), added in the row's order.
+// One image row's bilinear splat into a block's sums (each sum the
+// pixel's channels and its weight): every share value x ((1 - fx or fx) x
+// (1 - fy or fy)), added in the row's order.
 template <typename T, int C>
 void splat_row(const T* in, const cv::Vec2f* pos, int pixels, float kx, float ky, float offset, int r0, int rows,
                int cols, cv::Vec<T, C + 1>* sums) {
@@ -82,9 +78,77 @@ void splat_row(const T* in, const cv::Vec2f* pos, int pixels, float kx, float ky
       for (int di = 0; di < 2; ++di) {
         const int i = i0 + di;
         if (i < 0 || i >= cols) continue;
-        add_share(sums[size_t(j) * size_t(cols) + size_t(i)], value, (di ? fx : T(1) - fx) * wy);
+        add_share(sums[cell(j, i, cols + 2)], value, (di ? fx : T(1) - fx) * wy);
       }
     }
+  }
+}
+
+// The same for three float channels and the weight as one vector
+// (retina/pixel_vector.hpp), as fixed_splat.cpp's runs: the four sums a
+// pixel adds to are held in registers while the next pixels land on the
+// same pair of rows, in the same column or one column on (most do: the
+// retina's grid has at most a site per pixel); the left column's sums are
+// stored as the footprint moves one column right, and the new right
+// column's read; any other step stores the four and starts afresh. The
+// same products, and each sum its terms in the row's order from what it
+// held: the same bytes as the loop above.
+template <>
+EYESTREAM_VECTOR_CLONES void splat_row<float, 3>(const float* in, const cv::Vec2f* pos, int pixels, float kx, float ky,
+                                                 float offset, int r0, int rows, int cols, cv::Vec4f* sums_in) {
+  using Sum = retina::PixelVector;
+  Sum* sums = reinterpret_cast<Sum*>(sums_in);  // (the block's buffer: used only as Sum, by memset and memcpy)
+  const int stride = cols + 2;
+  // Pixel x's four shares, or false when none of its four cells is in the
+  // block's rows and the target's columns (as the loop above skips them).
+  const auto shares = [&](int x, int& i0, int& j0, Sum& tl, Sum& tr, Sum& bl, Sum& br) {
+    const float tx = pos[x][0] * kx + offset, ty = pos[x][1] * ky + offset;
+    i0 = int(std::floor(tx));
+    j0 = int(std::floor(ty));
+    if (j0 + 1 < r0 || j0 >= r0 + rows || i0 < -1 || i0 >= cols) return false;
+    const float fx = tx - float(i0), fy = ty - float(j0);
+    Sum value = {0.0f, 0.0f, 0.0f, 1.0f};
+    std::memcpy(&value, in + 3 * size_t(x), 3 * sizeof(float));
+    tl = value * ((1.0f - fx) * (1.0f - fy));
+    tr = value * (fx * (1.0f - fy));
+    bl = value * ((1.0f - fx) * fy);
+    br = value * (fx * fy);
+    return true;
+  };
+  int x = 0;
+  while (x < pixels) {
+    int i0, j0;
+    Sum tl, tr, bl, br;
+    if (!shares(x, i0, j0, tl, tr, bl, br)) {
+      ++x;
+      continue;
+    }
+    Sum* s = &sums[cell(j0 - r0, i0, stride)];
+    Sum t0 = s[0] + tl, t1 = s[1] + tr, b0 = s[stride] + bl, b1 = s[stride + 1] + br;
+    const int row = j0;
+    int column = i0;
+    for (++x; x < pixels; ++x) {
+      if (!shares(x, i0, j0, tl, tr, bl, br) || j0 != row || (i0 != column && i0 != column + 1)) break;
+      if (i0 == column) {
+        t0 += tl;
+        t1 += tr;
+        b0 += bl;
+        b1 += br;
+        continue;
+      }
+      s[0] = t0;
+      s[stride] = b0;
+      ++s;
+      column = i0;
+      t0 = t1 + tl;
+      b0 = b1 + bl;
+      t1 = s[1] + tr;
+      b1 = s[stride + 1] + br;
+    }
+    s[0] = t0;
+    s[1] = t1;
+    s[stride] = b0;
+    s[stride + 1] = b1;
   }
 }
 
@@ -111,8 +175,10 @@ void splat_block(const cv::Mat& image, const cv::Mat& positions, SplatAffine a, 
     for (int j = 0; j < rows; ++j) fill_outside<T, C>(outside, out.ptr<T>(r0 + j), 0, cols);
     return;
   }
-  for (int j = 0; j < rows; ++j)
-    std::fill(sums + size_t(j) * size_t(cols) + size_t(lo), sums + size_t(j) * size_t(cols) + size_t(hi), Acc::all(0));
+  // Zeros (all bits clear) in the columns the block's footprints reach,
+  // borders included.
+  for (int j = -1; j <= rows; ++j)
+    std::memset(static_cast<void*>(sums + cell(j, lo - 1, cols + 2)), 0, sizeof(Acc) * size_t(hi - lo + 2));
   const float kx = float(a.kx), ky = float(a.ky), offset = float(a.offset);
   for (int y = first_row; y <= last_row; ++y)
     splat_row<T, C>(image.ptr<T>(y), positions.ptr<cv::Vec2f>(y), image.cols, kx, ky, offset, r0, rows, cols, sums);
@@ -120,7 +186,7 @@ void splat_block(const cv::Mat& image, const cv::Mat& positions, SplatAffine a, 
     T* o = out.ptr<T>(r0 + j);
     const float* m = multiplier.empty() ? nullptr : multiplier.ptr<float>(r0 + j) + lo;
     fill_outside<T, C>(outside, o, 0, lo);
-    normalise_row<T, C>(sums + size_t(j) * size_t(cols) + size_t(lo), m, outside, o + size_t(lo) * C, hi - lo);
+    normalise_row<T, C>(sums + cell(j, lo, cols + 2), m, outside, o + size_t(lo) * C, hi - lo);
     fill_outside<T, C>(outside, o, hi, cols);
   }
 }
@@ -160,7 +226,7 @@ void splat_rows(const cv::Mat& image, const cv::Mat& positions, SplatAffine a, c
   // same blocks every frame, whichever threads run (the pool has them).
   const int shares = std::min(blocks, std::max(1, cv::getNumThreads()));
   std::vector<cv::Mat> accumulators(static_cast<size_t>(shares));
-  for (cv::Mat& m : accumulators) m.create(1, int(sizeof(cv::Vec<T, C + 1>)) * kBlockRows * out.cols, CV_8U);
+  for (cv::Mat& m : accumulators) m.create(kBlockRows + 2, int(sizeof(cv::Vec<T, C + 1>)) * (out.cols + 2), CV_8U);
   cv::parallel_for_(cv::Range(0, shares), [&](const cv::Range& r) {
     for (int k = r.start; k < r.end; ++k)
     for (int b = k; b < blocks; b += shares) {
@@ -181,8 +247,8 @@ void splat_rows(const cv::Mat& image, const cv::Mat& positions, SplatAffine a, c
 
 }  // namespace
 
-cv::Mat bilinear_splat(const cv::Mat& image, const cv::Mat& positions, SplatAffine a, cv::Size size, const cv::Scalar& outside,
-                  const cv::Mat& multiplier) {
+cv::Mat bilinear_splat(const cv::Mat& image, const cv::Mat& positions, SplatAffine a, cv::Size size,
+                       const cv::Scalar& outside, const cv::Mat& multiplier) {
   CV_Assert(positions.type() == CV_32FC2 && positions.size() == image.size());
   cv::Mat out(size, image.type());
   switch (image.type()) {
