@@ -199,23 +199,25 @@ void splat_rows(const cv::Mat& image, const cv::Mat& positions, SplatAffine a, c
                 const cv::Mat& multiplier, cv::Mat& out) {
   // Each image row's reach: the target rows [top, bottom] its footprints
   // can touch, and the columns [left, right), from the footprints' own
-  // left columns (splat_block's arithmetic: the same floors).
+  // top rows and left columns (splat_row's arithmetic, in float: the same
+  // floors; until the sixteenth session the rows were mapped in double,
+  // which could leave out a share of a float rounding on a block's edge).
   std::vector<int> top(size_t(image.rows)), bottom(size_t(image.rows)), left(size_t(image.rows)),
       right(size_t(image.rows));
-  const float kx = float(a.kx), offset = float(a.offset);
+  const float kx = float(a.kx), ky = float(a.ky), offset = float(a.offset);
   cv::parallel_for_(cv::Range(0, image.rows), [&](const cv::Range& r) {
     for (int y = r.start; y < r.end; ++y) {
       const cv::Vec2f* pos = positions.ptr<cv::Vec2f>(y);
       float low = 1e30f, high = -1e30f, west = 1e30f, east = -1e30f;
       for (int x = 0; x < image.cols; ++x) {
-        low = std::min(low, pos[x][1]);
-        high = std::max(high, pos[x][1]);
-        const float tx = pos[x][0] * kx + offset;
+        const float tx = pos[x][0] * kx + offset, ty = pos[x][1] * ky + offset;
+        low = std::min(low, ty);
+        high = std::max(high, ty);
         west = std::min(west, tx);
         east = std::max(east, tx);
       }
-      top[size_t(y)] = int(std::floor(low * a.ky + a.offset));
-      bottom[size_t(y)] = int(std::floor(high * a.ky + a.offset)) + 1;
+      top[size_t(y)] = int(std::floor(low));
+      bottom[size_t(y)] = int(std::floor(high)) + 1;
       left[size_t(y)] = int(std::floor(west));
       right[size_t(y)] = int(std::floor(east)) + 2;
     }

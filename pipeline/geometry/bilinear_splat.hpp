@@ -3,7 +3,8 @@
 // target pixel the normalised mean of what lands on it (the frame
 // projection's to_plane_mean and splat, and its plane's coverage). Made in
 // blocks of target rows, each scanning only the source rows that reach
-// it, so every sum takes its terms in one order whatever the thread count.
+// it, so every sum takes its terms in one order whatever the thread count:
+// the image's, row after row, each row's pixels from the left.
 #pragma once
 
 #include <opencv2/core.hpp>
