@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "pipeline/geometry/register_runs.hpp"
 #include "retina/pixel_vector.hpp"
 #include "retina/vector_clones.hpp"
 
@@ -85,14 +86,10 @@ void splat_row(const T* in, const cv::Vec2f* pos, int pixels, float kx, float ky
 }
 
 // The same for three float channels and the weight as one vector
-// (retina/pixel_vector.hpp), as fixed_splat.cpp's runs: the four sums a
-// pixel adds to are held in registers while the next pixels land on the
-// same pair of rows, in the same column or one column on (most do: the
-// retina's grid has at most a site per pixel); the left column's sums are
-// stored as the footprint moves one column right, and the new right
-// column's read; any other step stores the four and starts afresh. The
-// same products, and each sum its terms in the row's order from what it
-// held: the same bytes as the loop above.
+// (retina/pixel_vector.hpp), held in registers along runs of pixels
+// (register_runs.hpp; most pixels are in long runs: the retina's grid has
+// at most a site per pixel). The same products, and each sum its terms in
+// the row's order from what it held: the same bytes as the loop above.
 template <>
 EYESTREAM_VECTOR_CLONES void splat_row<float, 3>(const float* in, const cv::Vec2f* pos, int pixels, float kx, float ky,
                                                  float offset, int r0, int rows, int cols, cv::Vec4f* sums_in) {
@@ -115,41 +112,7 @@ EYESTREAM_VECTOR_CLONES void splat_row<float, 3>(const float* in, const cv::Vec2
     br = value * (fx * fy);
     return true;
   };
-  int x = 0;
-  while (x < pixels) {
-    int i0, j0;
-    Sum tl, tr, bl, br;
-    if (!shares(x, i0, j0, tl, tr, bl, br)) {
-      ++x;
-      continue;
-    }
-    Sum* s = &sums[cell(j0 - r0, i0, stride)];
-    Sum t0 = s[0] + tl, t1 = s[1] + tr, b0 = s[stride] + bl, b1 = s[stride + 1] + br;
-    const int row = j0;
-    int column = i0;
-    for (++x; x < pixels; ++x) {
-      if (!shares(x, i0, j0, tl, tr, bl, br) || j0 != row || (i0 != column && i0 != column + 1)) break;
-      if (i0 == column) {
-        t0 += tl;
-        t1 += tr;
-        b0 += bl;
-        b1 += br;
-        continue;
-      }
-      s[0] = t0;
-      s[stride] = b0;
-      ++s;
-      column = i0;
-      t0 = t1 + tl;
-      b0 = b1 + bl;
-      t1 = s[1] + tr;
-      b1 = s[stride + 1] + br;
-    }
-    s[0] = t0;
-    s[1] = t1;
-    s[stride] = b0;
-    s[stride + 1] = b1;
-  }
+  add_in_runs(shares, 0, pixels, sums, stride, r0);
 }
 
 // `outside` in target pixels [from, to) of a row.

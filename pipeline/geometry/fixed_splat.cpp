@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pipeline/geometry/register_runs.hpp"
 #include "retina/pixel_vector.hpp"
 #include "retina/vector_clones.hpp"
 
@@ -23,13 +24,8 @@ inline int row_above(float y) { return int(y + 0.5f) - 1; }
 using Rgbx = retina::PixelVector;
 
 // One run's pixels splatted into the accumulators `sums` (row stride
-// `stride`, the block's first row r0). The four sums a pixel adds to are
-// held in registers while the next pixels land on the same pair of rows,
-// in the same column or one column on (most do): the left column's sums
-// are stored as the footprint moves one column right, and the new right
-// column's read. Any other step stores the four and starts afresh. Each
-// sum still takes its terms in frame order, starting from what the
-// accumulator held, with no store and reload between them.
+// `stride`, the block's first row r0), held in registers along the run
+// (register_runs.hpp).
 template <bool kOnes>
 EYESTREAM_VECTOR_CLONES void splat_run(const cv::Vec2f* pos, const float* in, int x, int end, Rgbx* sums, int stride,
                                        int r0) {
@@ -45,39 +41,9 @@ EYESTREAM_VECTOR_CLONES void splat_run(const cv::Vec2f* pos, const float* in, in
     tr = top_row * fx;
     bl = bottom_row * (1.0f - fx);
     br = bottom_row * fx;
+    return true;
   };
-  while (x < end) {
-    int i0, j0;
-    Rgbx tl, tr, bl, br;
-    shares(x, i0, j0, tl, tr, bl, br);
-    Rgbx* s = &sums[size_t(j0 - r0 + 1) * size_t(stride) + size_t(i0 + 1)];
-    Rgbx t0 = s[0] + tl, t1 = s[1] + tr, b0 = s[stride] + bl, b1 = s[stride + 1] + br;
-    const int row = j0;
-    int column = i0;
-    for (++x; x < end; ++x) {
-      shares(x, i0, j0, tl, tr, bl, br);
-      if (j0 != row || (i0 != column && i0 != column + 1)) break;
-      if (i0 == column) {
-        t0 += tl;
-        t1 += tr;
-        b0 += bl;
-        b1 += br;
-        continue;
-      }
-      s[0] = t0;
-      s[stride] = b0;
-      ++s;
-      column = i0;
-      t0 = t1 + tl;
-      b0 = b1 + bl;
-      t1 = s[1] + tr;
-      b1 = s[stride + 1] + br;
-    }
-    s[0] = t0;
-    s[1] = t1;
-    s[stride] = b0;
-    s[stride + 1] = b1;
-  }
+  add_in_runs(shares, x, end, sums, stride, r0);
 }
 
 // A plane row out of its sums: each pixel's three values times its
