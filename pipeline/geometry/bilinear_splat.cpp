@@ -51,12 +51,6 @@ inline void add_share(cv::Vec<T, N>& sum, const cv::Vec<T, N>& value, T share) {
   sum += value * share;
 }
 
-// The accumulators of a block: its target rows [r0, r0 + rows) and one
-// border row each way, each of its columns and one border column each
-// way (`stride` = cols + 2), so that every footprint meeting the block
-// has its four cells (those of the borders are left out).
-inline size_t cell(int j, int i, int stride) { return size_t(j + 1) * size_t(stride) + size_t(i + 1); }
-
 // One image row's bilinear splat into a block's sums (each sum the
 // pixel's channels and its weight): every share value x ((1 - fx or fx) x
 // (1 - fy or fy)), added in the row's order.
@@ -79,7 +73,7 @@ void splat_row(const T* in, const cv::Vec2f* pos, int pixels, float kx, float ky
       for (int di = 0; di < 2; ++di) {
         const int i = i0 + di;
         if (i < 0 || i >= cols) continue;
-        add_share(sums[cell(j, i, cols + 2)], value, (di ? fx : T(1) - fx) * wy);
+        add_share(sums[block_cell(j, i, cols + 2)], value, (di ? fx : T(1) - fx) * wy);
       }
     }
   }
@@ -139,9 +133,11 @@ void splat_block(const cv::Mat& image, const cv::Mat& positions, SplatAffine a, 
     return;
   }
   // Zeros (all bits clear) in the columns the block's footprints reach,
-  // borders included.
+  // with a border row and column each way (register_runs.hpp's
+  // block_cell), so that every footprint meeting the block has its four
+  // cells (the borders' are left out).
   for (int j = -1; j <= rows; ++j)
-    std::memset(static_cast<void*>(sums + cell(j, lo - 1, cols + 2)), 0, sizeof(Acc) * size_t(hi - lo + 2));
+    std::memset(static_cast<void*>(sums + block_cell(j, lo - 1, cols + 2)), 0, sizeof(Acc) * size_t(hi - lo + 2));
   const float kx = float(a.kx), ky = float(a.ky), offset = float(a.offset);
   for (int y = first_row; y <= last_row; ++y)
     splat_row<T, C>(image.ptr<T>(y), positions.ptr<cv::Vec2f>(y), image.cols, kx, ky, offset, r0, rows, cols, sums);
@@ -149,7 +145,7 @@ void splat_block(const cv::Mat& image, const cv::Mat& positions, SplatAffine a, 
     T* o = out.ptr<T>(r0 + j);
     const float* m = multiplier.empty() ? nullptr : multiplier.ptr<float>(r0 + j) + lo;
     fill_outside<T, C>(outside, o, 0, lo);
-    normalise_row<T, C>(sums + cell(j, lo, cols + 2), m, outside, o + size_t(lo) * C, hi - lo);
+    normalise_row<T, C>(sums + block_cell(j, lo, cols + 2), m, outside, o + size_t(lo) * C, hi - lo);
     fill_outside<T, C>(outside, o, hi, cols);
   }
 }

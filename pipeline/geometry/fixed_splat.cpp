@@ -145,7 +145,7 @@ void FixedSplat::splat(const cv::Mat* frame, const cv::Mat* factor, cv::Mat& out
           splat_run<kOnes>(positions_.ptr<cv::Vec2f>(run.y), in, run.x0, run.x1, sums, stride, r0);
         }
         for (int j = 0; j < rows; ++j) {
-          const Rgbx* s = &sums[size_t(j + 1) * size_t(stride) + 1];
+          const Rgbx* s = &sums[block_cell(j, 0, stride)];
           if (kOnes) {  // (a factor of 1 would change nothing)
             float* o = out.ptr<float>(r0 + j);
             for (int i = 0; i < cols; ++i) o[i] = s[i][0];

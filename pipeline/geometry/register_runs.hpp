@@ -16,11 +16,15 @@
 
 namespace eyestream::pipeline {
 
+// A block's cells: block row j (0 the block's first row, r0; -1 and the
+// block's height the border rows) and column i (-1 and the target's
+// width the border columns), `stride` cells a row (the width + 2).
+inline size_t block_cell(int j, int i, int stride) { return size_t(j + 1) * size_t(stride) + size_t(i + 1); }
+
 // Pixels [x, end): shares(x, i0, j0, tl, tr, bl, br) gives pixel x's
 // footprint (its top-left cell at column i0, row j0) and its four shares,
-// or false when the pixel adds nothing. `sums` is the block's first row
-// r0 - 1 (a border row above the block, and one below it), its cells
-// column -1 (a border column each way) on, `stride` cells a row. Inlined
+// or false when the pixel adds nothing; `sums` holds the block's cells
+// (block_cell), the block's first row being r0. Inlined
 // into its callers, so it runs at their instruction set
 // (retina/vector_clones.hpp).
 template <typename Shares>
@@ -33,7 +37,7 @@ inline void add_in_runs(const Shares& shares, int x, int end, retina::PixelVecto
       ++x;
       continue;
     }
-    Sum* s = &sums[size_t(j0 - r0 + 1) * size_t(stride) + size_t(i0 + 1)];
+    Sum* s = &sums[block_cell(j0 - r0, i0, stride)];
     Sum t0 = s[0] + tl, t1 = s[1] + tr, b0 = s[stride] + bl, b1 = s[stride + 1] + br;
     const int row = j0;
     int column = i0;
